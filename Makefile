@@ -1,0 +1,113 @@
+# retro: voxel-space render kernels. `make help` lists the targets.
+# Objects go to $(BUILD); ISA flags are set per file; every object gets -ffp-contract=off.
+
+CC       ?= cc
+CXX      ?= c++
+BUILD    ?= build
+BIN      := $(BUILD)/bin
+OPT      ?= -O2
+SAN      ?=
+V        ?= 0
+Q        := $(if $(filter 1,$(V)),,@)
+SHARED   ?= ../shared
+
+WARN     := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wvla -Wconversion -Wno-sign-conversion
+FPFLAGS  := -ffp-contract=off -fno-math-errno
+CFLAGS   ?= $(OPT) -g
+ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+CXXFLAGS ?= $(OPT) -g
+ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+
+PKGS_LIB  := spng
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
+TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
+LDLIBS     = $(PKG_LIBS) -lm
+
+LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
+CLI_SRC  := $(wildcard src/cli/*.c)
+TEST_SRC := $(filter-out tests/count_%,$(wildcard tests/test_*.c)) tests/ref_exact.c
+COUNT_TEST_SRC := tests/count_writes.c
+# Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
+COUNTED  := $(wildcard src/kernel_*.c)
+
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
+COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
+COUNT_LIB_OBJ := $(filter-out $(COUNTED:src/%.c=$(BUILD)/src/%.o),$(LIB_OBJ))
+
+LIB      := $(BUILD)/libretro.a
+RETRO    := $(BIN)/retro
+TESTS    := $(BIN)/retro-tests
+COUNT_TESTS := $(BIN)/retro-count-tests
+
+.PHONY: all help deps check verify verify-full demo maps asan clean install
+all: $(RETRO) ## build the library and the retro CLI
+
+help: ## list the targets
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 16
+
+deps: ## install missing Debian packages (compiler, libraries, tools)
+	$(Q)sh scripts/install-deps.sh
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(ALLCFLAGS) $(PKG_CFLAGS) -c $< -o $@
+
+$(BUILD)/count/%.o: src/%.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $< (counting writes)")
+	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_COUNT_WRITES -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+$(RETRO): $(CLI_OBJ) $(LIB)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SAN) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+
+$(TESTS): $(TEST_OBJ) $(LIB)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SAN) -o $@ $(TEST_OBJ) $(LIB) $(TEST_LIBS) $(LDLIBS)
+
+$(COUNT_TESTS): $(COUNT_OBJ) $(COUNT_LIB_OBJ)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SAN) -o $@ $(COUNT_OBJ) $(COUNT_LIB_OBJ) $(TEST_LIBS) $(LDLIBS)
+
+maps: $(RETRO) ## generate the default scenes and the analytic test maps under maps/
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+
+check: deps ## run the tests (installs what is missing first)
+	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS)
+	$(Q)sh scripts/make-maps.sh $(RETRO) test
+	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
+
+verify: $(RETRO) ## every kernel in every mode against naive, byte for byte (full case set)
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) verify
+
+demo: deps ## render the default scenes to results/*.png
+	$(Q)$(MAKE) --no-print-directory $(RETRO)
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)sh scripts/demo.sh $(RETRO)
+
+asan: ## the tests under AddressSanitizer + UndefinedBehaviorSanitizer
+	$(Q)$(MAKE) --no-print-directory check BUILD=build/asan OPT=-O1 \
+	  SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+
+PREFIX ?= /usr/local
+install: $(RETRO) $(LIB) ## install retro, libretro.a and the headers under PREFIX
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/retro
+	install -m 755 $(RETRO) $(DESTDIR)$(PREFIX)/bin/
+	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/retro/
+
+clean: ## remove build outputs (generated maps too)
+	rm -rf build maps/*.pgm maps/*.ppm maps/*.png results/verify
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

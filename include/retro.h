@@ -1,0 +1,149 @@
+/* retro: one interface, many voxel-space kernels.
+ *
+ * A frame is defined by ../shared/SEMANTICS.md in two modes. retro_frame_setup() validates the
+ * input and computes, once per frame, every constant the formulas need (angle, column rays,
+ * per-distance scale, course-mode line endpoints), so kernels differ only in traversal and
+ * machinery, never in arithmetic. Every kernel is one row of retro_kernels[]; the CLI, the
+ * equivalence checker, the tests and the benchmark all walk that one table.
+ */
+#ifndef RETRO_H
+#define RETRO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "render.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    RETRO_MODE_EXACT = 0,  /* the specification done right, binary32 */
+    RETRO_MODE_COURSE = 1, /* bit-compatible with the course's reference images */
+    RETRO_MODE_COUNT
+} retro_mode;
+
+#define RETRO_MODE_BIT(m) (1u << (m))
+
+typedef enum {
+    RETRO_OK = 0,
+    RETRO_EINVAL = 1,      /* input outside the valid domain of SEMANTICS.md */
+    RETRO_ENOMEM = 2,      /* scratch memory could not be reserved */
+    RETRO_EUNSUPPORTED = 3 /* the kernel lacks this mode or this CPU lacks its ISA */
+} retro_err;
+
+/* Limits that make "absurd" precise: beyond them the API reports RETRO_EINVAL. */
+#define RETRO_MAX_SCREEN 16384       /* W and H */
+#define RETRO_MAX_PIXELS (1L << 26)  /* W*H */
+#define RETRO_MAX_MAP 16384          /* S */
+#define RETRO_MAX_DISTANCE (1 << 22) /* D */
+
+/* Everything a kernel may read for one frame. Built by retro_frame_setup(). */
+typedef struct retro_frame {
+    retro_mode mode;
+    int W, H, S, D;
+    uint32_t sky;
+    const uint8_t *height_map;
+    const uint32_t *color_map;
+    uint32_t *out;
+    int64_t height;    /* camera height, widened so h - height never overflows */
+    int hmax;          /* maximum of the height map, for exact early exits */
+    /* mode exact */
+    float cs, sn;      /* view direction, exact at multiples of 90 degrees */
+    float x0, y0;      /* position reduced modulo S */
+    float half_w;      /* 0.5f * W */
+    float half_h;      /* 0.5f * H */
+    const float *rx;   /* [W] column ray x: cs + t_u * sn */
+    const float *ry;   /* [W] column ray y: t_u * cs - sn */
+    const float *kd;   /* [D] projection scale (0.5f*W)/d, entry 0 unused */
+    /* mode course */
+    float cw2;         /* (float)(W/2) */
+    int ch2;           /* H/2 */
+    const float *lx, *ly; /* [D] left endpoint of line d */
+    const float *sx, *sy; /* [D] per-column step of line d */
+    /* both modes: vcap[d] = max over d' >= d of the projected row of a sample of height
+     * hmax; no sample at distance >= d can rise above it (entry D is 0). */
+    const int *vcap;
+} retro_frame;
+
+/* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
+ * once the sizes are reached, freed by retro_ctx_free(). */
+typedef struct retro_ctx {
+    retro_frame frame;
+    float *rx, *ry;     /* capacity cap_w */
+    float *kd;          /* capacity cap_d */
+    float *lx, *ly, *sx, *sy;
+    int *vcap;          /* capacity cap_d + 1 */
+    int *ybuf;          /* per-column y-buffer, capacity cap_w */
+    float *qx, *qy;     /* course-mode accumulators per distance, capacity cap_d */
+    int cap_w, cap_d;
+    const uint8_t *hmax_map; /* map whose maximum is cached in hmax_value */
+    int hmax_size;
+    int hmax_value;
+    int threads;        /* requested threads for parallel kernels (0 = default) */
+    void *pool;         /* owned by parallel kernels */
+} retro_ctx;
+
+void retro_ctx_init(retro_ctx *rc);
+void retro_ctx_free(retro_ctx *rc);
+/* The height-map maximum is cached per map pointer; call this after editing a map in place. */
+void retro_ctx_map_changed(retro_ctx *rc);
+
+/* Validates (player, ctx) for mode and fills rc->frame. Returns RETRO_OK or an error. */
+retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c);
+
+typedef void (*retro_kernel_fn)(const retro_frame *f, retro_ctx *rc);
+
+/* CPU features a kernel may require. */
+enum {
+    RETRO_CPU_SSE2 = 1u << 0,
+    RETRO_CPU_AVX2 = 1u << 1,
+    RETRO_CPU_AVX512 = 1u << 2, /* F + BW + VL + DQ */
+};
+
+/* Kernel properties. */
+enum {
+    RETRO_KF_WRITE_ONCE = 1u << 0, /* writes every pixel of out exactly once per frame */
+    RETRO_KF_THREADED = 1u << 1,   /* uses more than one thread */
+};
+
+typedef struct retro_kernel {
+    const char *name;     /* stable: the CLI, verify and the benchmark name kernels by it */
+    retro_kernel_fn fn;
+    unsigned cpu;         /* RETRO_CPU_* it needs */
+    unsigned modes;       /* RETRO_MODE_BIT() of the modes it renders */
+    unsigned flags;       /* RETRO_KF_* */
+    const char *summary;  /* one line for `retro kernels` */
+} retro_kernel;
+
+extern const retro_kernel retro_kernels[];
+extern const size_t retro_kernel_count;
+
+const retro_kernel *retro_kernel_find(const char *name);
+/* The fastest kernel this CPU runs for mode (the last capable row of the table). */
+const retro_kernel *retro_kernel_best(retro_mode mode);
+int retro_kernel_runs_here(const retro_kernel *k);
+int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode);
+
+/* CPU features detected once and cached, masked by RETRO_ISA (none|sse2|avx2|avx512) or
+ * retro_cpu_limit(). */
+unsigned retro_cpu_features(void);
+/* Forces a lower ISA level; returns RETRO_EINVAL for an unknown name. */
+retro_err retro_cpu_limit(const char *level);
+const char *retro_cpu_level_name(unsigned features);
+
+/* Validates, sets up and renders one frame with kernel k. */
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode,
+                       const player_t *p, ctx_t *c);
+
+const char *retro_mode_name(retro_mode mode);
+/* Returns 0 and sets *mode for "exact" or "course"; -1 otherwise. */
+int retro_mode_parse(const char *name, retro_mode *mode);
+const char *retro_strerror(retro_err e);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

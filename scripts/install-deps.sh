@@ -1,0 +1,18 @@
+#!/bin/sh
+# Installs the Debian packages the suite needs, only those missing, as root or through sudo.
+set -eu
+PKGS="build-essential clang pkg-config libspng-dev libcriterion-dev libbenchmark-dev libhwloc-dev hwloc libinih-dev gnuplot-nox"
+missing=""
+for p in $PKGS; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "installing:$missing"
+if [ "$(id -u)" = 0 ]; then SUDO=""; elif command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+  echo "error: missing packages:$missing; install them as root: apt-get install$missing" >&2
+  exit 2
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# shellcheck disable=SC2086
+$SUDO apt-get install -y -qq $missing >/dev/null

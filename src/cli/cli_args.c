@@ -1,0 +1,106 @@
+/* Strict argument parsing: "12abc", "", out-of-range and non-finite values are errors. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+int cli_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "retro %s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return CLI_EBADINPUT;
+}
+
+int cli_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || errno || v < lo || v > hi)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int cli_u64(const char *s, uint64_t *out)
+{
+    char *end;
+    errno = 0;
+    if (!*s || *s == '-')
+        return -1;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (*end || errno)
+        return -1;
+    *out = (uint64_t)v;
+    return 0;
+}
+
+int cli_float(const char *s, float *out)
+{
+    char *end;
+    errno = 0;
+    float v = strtof(s, &end);
+    if (!*s || *end || errno == ERANGE || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Splits "AsepB" at the first sep into two NUL-terminated copies. */
+static int split(const char *s, char sep, char *a, char *b, size_t n)
+{
+    const char *p = strchr(s, sep);
+    if (!p || (size_t)(p - s) >= n || strlen(p + 1) >= n)
+        return -1;
+    memcpy(a, s, (size_t)(p - s));
+    a[p - s] = 0;
+    strcpy(b, p + 1);
+    return 0;
+}
+
+int cli_size(const char *s, int *w, int *h)
+{
+    char a[32], b[32];
+    long x, y;
+    if (split(s, 'x', a, b, sizeof a) || cli_int(a, 1, 1L << 30, &x) || cli_int(b, 1, 1L << 30, &y))
+        return -1;
+    *w = (int)x;
+    *h = (int)y;
+    return 0;
+}
+
+int cli_pair(const char *s, float *x, float *y)
+{
+    char a[64], b[64];
+    if (split(s, ',', a, b, sizeof a) || cli_float(a, x) || cli_float(b, y))
+        return -1;
+    return 0;
+}
+
+int cli_rgb(const char *s, uint32_t *rgb)
+{
+    const char *p = s[0] == '#' ? s + 1 : s;
+    char *end;
+    if (strlen(p) != 6)
+        return -1;
+    unsigned long v = strtoul(p, &end, 16);
+    if (*end)
+        return -1;
+    *rgb = (uint32_t)v << 8;
+    return 0;
+}
+
+const char *cli_value(int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}

@@ -1,0 +1,40 @@
+/* retro: render, list and verify the voxel-space kernels. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+static const struct {
+    const char *name;
+    int (*fn)(int, char **);
+    const char *what;
+} commands[] = {
+    {"render", cmd_render, "render one frame of a map to PPM or PNG"},
+    {"kernels", cmd_kernels, "list the kernels, their modes and whether this CPU runs them"},
+    {"verify", cmd_verify, "check every kernel pixel-identical to naive"},
+    {"genmap", cmd_genmap, "generate a procedural or analytic map"},
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: retro COMMAND [ARGS]   (retro COMMAND --help for its options)\n\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].what);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CLI_EBADINPUT;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].fn(argc - 1, argv + 1);
+    fprintf(stderr, "retro: unknown command '%s' (retro --help lists them)\n", argv[1]);
+    return CLI_EBADINPUT;
+}

@@ -1,0 +1,80 @@
+/* CPU features, detected once and cached; RETRO_ISA or retro_cpu_limit() masks them so the
+ * tests and `make verify` can run every kernel at every ISA level this CPU has. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "retro.h"
+
+static const struct {
+    const char *name;
+    unsigned mask; /* features allowed at this level */
+} levels[] = {
+    {"none", 0},
+    {"sse2", RETRO_CPU_SSE2},
+    {"avx2", RETRO_CPU_SSE2 | RETRO_CPU_AVX2},
+    {"avx512", RETRO_CPU_SSE2 | RETRO_CPU_AVX2 | RETRO_CPU_AVX512},
+};
+
+static unsigned detected(void)
+{
+    static int done;
+    static unsigned cached;
+    if (!done) {
+        unsigned f = 0;
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("sse2"))
+            f |= RETRO_CPU_SSE2;
+        if (__builtin_cpu_supports("avx2"))
+            f |= RETRO_CPU_AVX2;
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
+            f |= RETRO_CPU_AVX512;
+#endif
+        cached = f;
+        done = 1;
+    }
+    return cached;
+}
+
+static int level_of(const char *name)
+{
+    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++)
+        if (!strcmp(levels[i].name, name))
+            return (int)i;
+    return -1;
+}
+
+static int limit = -2; /* -2: not read yet, -1: no limit */
+
+retro_err retro_cpu_limit(const char *level)
+{
+    if (!level) {
+        limit = -1;
+        return RETRO_OK;
+    }
+    int l = level_of(level);
+    if (l < 0)
+        return RETRO_EINVAL;
+    limit = l;
+    return RETRO_OK;
+}
+
+unsigned retro_cpu_features(void)
+{
+    if (limit == -2) {
+        const char *env = getenv("RETRO_ISA");
+        limit = env && *env ? level_of(env) : -1;
+    }
+    unsigned f = detected();
+    return limit >= 0 ? f & levels[limit].mask : f;
+}
+
+const char *retro_cpu_level_name(unsigned features)
+{
+    const char *name = levels[0].name;
+    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++)
+        if ((features & levels[i].mask) == levels[i].mask)
+            name = levels[i].name;
+    return name;
+}

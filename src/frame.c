@@ -1,0 +1,268 @@
+/* Frame setup: the formulas of SEMANTICS.md written once. Kernels read only retro_frame. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "retro.h"
+#include "retro_internal.h"
+
+void retro_ctx_init(retro_ctx *rc)
+{
+    memset(rc, 0, sizeof *rc);
+}
+
+void retro_ctx_free(retro_ctx *rc)
+{
+    free(rc->rx);
+    free(rc->ry);
+    free(rc->kd);
+    free(rc->lx);
+    free(rc->ly);
+    free(rc->sx);
+    free(rc->sy);
+    free(rc->vcap);
+    free(rc->ybuf);
+    free(rc->qx);
+    free(rc->qy);
+    retro_pool_free(rc);
+    memset(rc, 0, sizeof *rc);
+}
+
+void retro_ctx_map_changed(retro_ctx *rc)
+{
+    rc->hmax_map = NULL;
+}
+
+/* Grows a buffer to n elements; memory only ever grows so steady-state frames never allocate. */
+static int grow(void **buf, size_t n, size_t elem)
+{
+    void *p = realloc(*buf, n * elem);
+    if (!p)
+        return -1;
+    *buf = p;
+    return 0;
+}
+
+static retro_err reserve(retro_ctx *rc, int w, int d)
+{
+    if (w > rc->cap_w) {
+        size_t n = (size_t)w;
+        if (grow((void **)&rc->rx, n, sizeof(float)) || grow((void **)&rc->ry, n, sizeof(float)) ||
+            grow((void **)&rc->ybuf, n, sizeof(int)))
+            return RETRO_ENOMEM;
+        rc->cap_w = w;
+    }
+    if (d > rc->cap_d) {
+        size_t n = (size_t)d;
+        if (grow((void **)&rc->kd, n, sizeof(float)) || grow((void **)&rc->lx, n, sizeof(float)) ||
+            grow((void **)&rc->ly, n, sizeof(float)) || grow((void **)&rc->sx, n, sizeof(float)) ||
+            grow((void **)&rc->sy, n, sizeof(float)) || grow((void **)&rc->qx, n, sizeof(float)) ||
+            grow((void **)&rc->qy, n, sizeof(float)) || grow((void **)&rc->vcap, n + 1, sizeof(int)))
+            return RETRO_ENOMEM;
+        rc->cap_d = d;
+    }
+    return RETRO_OK;
+}
+
+static int map_max(const uint8_t *h, size_t n)
+{
+    uint8_t m = 0;
+    for (size_t i = 0; i < n; i++)
+        m = h[i] > m ? h[i] : m;
+    return m;
+}
+
+int retro_exact_row(float kd, float half_h, int H, int64_t dh)
+{
+    float vf = kd * (float)dh + half_h;
+    if (vf >= (float)H)
+        return H;
+    if (vf >= 0.0f)
+        return (int)vf; /* vf is non-negative: truncation is the floor */
+    return 0;
+}
+
+int retro_course_row(float cw2, int ch2, int H, int64_t dh, int d)
+{
+    float f = cw2 * (float)dh / (float)d;
+    /* The course truncates, adds H/2 and clamps; done in double so a huge value saturates
+     * instead of overflowing int. */
+    double v = trunc((double)f) + (double)ch2;
+    if (v >= (double)H)
+        return H;
+    if (v <= 0.0)
+        return 0;
+    return (int)v;
+}
+
+float retro_float_mod(float f, float k)
+{
+    float res = fmodf(f, k);
+    if (res < 0)
+        res += k;
+    if (res >= k)
+        res = 0;
+    return res;
+}
+
+static double wrap(float v, int s)
+{
+    double r = fmod((double)v, (double)s);
+    if (r < 0)
+        r += (double)s;
+    return r;
+}
+
+static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
+{
+    int a = angle % 360;
+    if (a < 0)
+        a += 360;
+    int q = a / 90, r = a % 90;
+    double rad = (double)r * 3.14159265358979323846 / 180.0;
+    float c0 = (float)cos(rad), s0 = (float)sin(rad);
+    static const int swap[4] = {0, 1, 0, 1};
+    static const float csign[4] = {1, -1, -1, 1}, ssign[4] = {1, 1, -1, -1};
+    /* A quarter turn only swaps and negates, so multiples of 90 degrees are exact. */
+    f->cs = csign[q] * (swap[q] ? s0 : c0);
+    f->sn = ssign[q] * (swap[q] ? c0 : s0);
+
+    int W = f->W;
+    for (int u = 1; u <= W; u++) {
+        float t = 0.0f;
+        if (W > 1)
+            t = (float)(2 * (int64_t)(u - 1) - (W - 1)) / (float)(W - 1);
+        rc->rx[u - 1] = f->cs + t * f->sn;
+        rc->ry[u - 1] = t * f->cs - f->sn;
+    }
+    f->half_w = 0.5f * (float)W;
+    f->half_h = 0.5f * (float)f->H;
+    for (int d = 1; d < f->D; d++)
+        rc->kd[d] = f->half_w / (float)d;
+    int64_t dh = (int64_t)f->hmax - f->height;
+    rc->vcap[f->D] = 0;
+    for (int d = f->D - 1; d >= 1; d--) {
+        int v = retro_exact_row(rc->kd[d], f->half_h, f->H, dh);
+        rc->vcap[d] = v > rc->vcap[d + 1] ? v : rc->vcap[d + 1];
+    }
+}
+
+static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
+{
+    float phi = (float)(p->angle * 3.14159265358979323846 / 180.0);
+    float c = cosf(phi), s = sinf(phi);
+    float fw = (float)f->W;
+    for (int d = 1; d < f->D; d++) {
+        float a = c * (float)d, b = s * (float)d;
+        float lx = (p->x + a) - b, ly = (p->y - b) - a;
+        float rx = (p->x + a) + b, ry = (p->y - b) + a;
+        rc->lx[d] = lx;
+        rc->ly[d] = ly;
+        rc->sx[d] = (rx - lx) / fw;
+        rc->sy[d] = (ry - ly) / fw;
+    }
+    f->cw2 = (float)(f->W / 2);
+    f->ch2 = f->H / 2;
+    int64_t dh = (int64_t)f->hmax - f->height;
+    rc->vcap[f->D] = 0;
+    for (int d = f->D - 1; d >= 1; d--) {
+        int v = retro_course_row(f->cw2, f->ch2, f->H, dh, d);
+        rc->vcap[d] = v > rc->vcap[d + 1] ? v : rc->vcap[d + 1];
+    }
+}
+
+retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c)
+{
+    if (!rc || !p || !c || !c->height_map || !c->color_map || !c->out)
+        return RETRO_EINVAL;
+    if (mode != RETRO_MODE_EXACT && mode != RETRO_MODE_COURSE)
+        return RETRO_EINVAL;
+    int W = c->scr_width, H = c->scr_height, S = c->map_size;
+    if (W < 1 || H < 1 || W > RETRO_MAX_SCREEN || H > RETRO_MAX_SCREEN ||
+        (long)W * H > RETRO_MAX_PIXELS)
+        return RETRO_EINVAL;
+    if (S < (mode == RETRO_MODE_COURSE ? 2 : 1) || S > RETRO_MAX_MAP)
+        return RETRO_EINVAL;
+    if (c->distance > RETRO_MAX_DISTANCE || !isfinite(p->x) || !isfinite(p->y))
+        return RETRO_EINVAL;
+    int D = c->distance < 1 ? 1 : c->distance;
+    retro_err e = reserve(rc, W, D);
+    if (e)
+        return e;
+
+    if (rc->hmax_map != c->height_map || rc->hmax_size != S) {
+        rc->hmax_value = map_max(c->height_map, (size_t)S * (size_t)S);
+        rc->hmax_map = c->height_map;
+        rc->hmax_size = S;
+    }
+
+    retro_frame *f = &rc->frame;
+    memset(f, 0, sizeof *f);
+    f->mode = mode;
+    f->W = W;
+    f->H = H;
+    f->S = S;
+    f->D = D;
+    f->sky = c->sky_color;
+    f->height_map = c->height_map;
+    f->color_map = c->color_map;
+    f->out = c->out;
+    f->height = p->height;
+    f->hmax = rc->hmax_value;
+    f->x0 = (float)wrap(p->x, S);
+    f->y0 = (float)wrap(p->y, S);
+    f->rx = rc->rx;
+    f->ry = rc->ry;
+    f->kd = rc->kd;
+    f->lx = rc->lx;
+    f->ly = rc->ly;
+    f->sx = rc->sx;
+    f->sy = rc->sy;
+    f->vcap = rc->vcap;
+    if (mode == RETRO_MODE_EXACT)
+        setup_exact(rc, f, p->angle);
+    else
+        setup_course(rc, f, p);
+    return RETRO_OK;
+}
+
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode, const player_t *p,
+                       ctx_t *c)
+{
+    if (!k)
+        return RETRO_EINVAL;
+    if (!retro_kernel_has_mode(k, mode) || !retro_kernel_runs_here(k))
+        return RETRO_EUNSUPPORTED;
+    retro_err e = retro_frame_setup(rc, mode, p, c);
+    if (e)
+        return e;
+    k->fn(&rc->frame, rc);
+    return RETRO_OK;
+}
+
+const char *retro_mode_name(retro_mode mode)
+{
+    return mode == RETRO_MODE_COURSE ? "course" : "exact";
+}
+
+int retro_mode_parse(const char *name, retro_mode *mode)
+{
+    if (!strcmp(name, "exact"))
+        *mode = RETRO_MODE_EXACT;
+    else if (!strcmp(name, "course"))
+        *mode = RETRO_MODE_COURSE;
+    else
+        return -1;
+    return 0;
+}
+
+const char *retro_strerror(retro_err e)
+{
+    switch (e) {
+    case RETRO_OK: return "ok";
+    case RETRO_EINVAL: return "input outside the valid domain";
+    case RETRO_ENOMEM: return "out of memory";
+    case RETRO_EUNSUPPORTED: return "kernel does not support this mode or CPU";
+    }
+    return "unknown error";
+}

@@ -1,0 +1,48 @@
+/* The one table of kernels, slowest first: retro_kernel_best() takes the last row this CPU
+ * runs. Adding a kernel is one file, one prototype in kernels.h and one row here. */
+#include <string.h>
+
+#include "kernels.h"
+
+#define BOTH (RETRO_MODE_BIT(RETRO_MODE_EXACT) | RETRO_MODE_BIT(RETRO_MODE_COURSE))
+
+const retro_kernel retro_kernels[] = {
+    {"naive", retro_kernel_naive, 0, BOTH, 0, "painter, back to front: the reference"},
+    {"ybuffer", retro_kernel_ybuffer, 0, BOTH, RETRO_KF_WRITE_ONCE,
+     "front to back with a per-column y-buffer, each pixel written once"},
+};
+
+const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
+
+const retro_kernel *retro_kernel_find(const char *name)
+{
+    for (size_t i = 0; i < retro_kernel_count; i++)
+        if (!strcmp(retro_kernels[i].name, name))
+            return &retro_kernels[i];
+    return NULL;
+}
+
+int retro_kernel_runs_here(const retro_kernel *k)
+{
+    return (k->cpu & retro_cpu_features()) == k->cpu;
+}
+
+int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode)
+{
+    return (unsigned)mode < RETRO_MODE_COUNT && (k->modes & RETRO_MODE_BIT(mode)) != 0;
+}
+
+const retro_kernel *retro_kernel_best(retro_mode mode)
+{
+    const retro_kernel *best = NULL;
+    for (size_t i = 0; i < retro_kernel_count; i++)
+        if (retro_kernel_runs_here(&retro_kernels[i]) && retro_kernel_has_mode(&retro_kernels[i], mode))
+            best = &retro_kernels[i];
+    return best;
+}
+
+/* Parallel kernels own a pool in the context; until one lands there is nothing to free. */
+void retro_pool_free(retro_ctx *rc)
+{
+    rc->pool = NULL;
+}
