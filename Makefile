@@ -26,8 +26,8 @@ LDLIBS     = $(PKG_LIBS) -lm
 
 LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
 CLI_SRC  := $(wildcard src/cli/*.c)
-TEST_SRC := $(filter-out tests/count_%,$(wildcard tests/test_*.c)) tests/ref_exact.c
-COUNT_TEST_SRC := tests/count_writes.c
+TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c
+COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(wildcard src/kernel_*.c)
 

@@ -9,7 +9,7 @@ failed=0
 status=0
 for t in "$@"; do
   echo "== $t"
-  out=$("$t" --ascii -j2 2>&1)
+  out=$("$t" -j2 2>&1)
   rc=$?
   printf '%s\n' "$out" | grep -v '^\[----\]' || true
   line=$(printf '%s\n' "$out" | grep 'Synthesis:' | tail -n 1)

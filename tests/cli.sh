@@ -1,0 +1,57 @@
+#!/bin/sh
+# The retro CLI's contract: bad input gives one line on stderr, exit 2, and no output file.
+set -u
+retro=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+map=maps/test/ramp-64
+
+expect_bad() { # DESCRIPTION ARGS...
+  what=$1; shift
+  out="$tmp/out.png"
+  rm -f "$out"
+  "$retro" "$@" 2>"$tmp/err" >/dev/null
+  rc=$?
+  lines=$(wc -l <"$tmp/err")
+  if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || [ -e "$out" ] || ls "$tmp" | grep -q tmp; then
+    echo "FAIL: $what: exit $rc, $lines stderr lines: $(cat "$tmp/err")"
+    fails=$((fails + 1))
+  fi
+}
+
+printf 'P5\n4 4\n255\n' >"$tmp/trunc.pgm"; printf 'P6\n4 4\n255\n' >"$tmp/trunc.ppm"
+printf 'P5\n4 2\n255\n12345678' >"$tmp/rect.pgm"; printf 'P6\n4 2\n255\n' >"$tmp/rect.ppm"
+printf 'P5\n2 2\n255\n1234' >"$tmp/mis.pgm"; printf 'P6\n3 3\n255\n123456789012345678901234567' >"$tmp/mis.ppm"
+printf 'P5\n2 2\n15\n1234' >"$tmp/mv.pgm"; printf 'P6\n2 2\n255\n123456789012' >"$tmp/mv.ppm"
+
+expect_bad "missing map" render "$tmp/none" -o "$tmp/out.png"
+expect_bad "truncated map" render "$tmp/trunc" -o "$tmp/out.png"
+expect_bad "non-square map" render "$tmp/rect" -o "$tmp/out.png"
+expect_bad "size mismatch" render "$tmp/mis" -o "$tmp/out.png"
+expect_bad "maxval" render "$tmp/mv" -o "$tmp/out.png"
+expect_bad "absurd screen" render $map -s 100000x100000 -o "$tmp/out.png"
+expect_bad "zero screen" render $map -s 0x10 -o "$tmp/out.png"
+expect_bad "negative screen" render $map -s -3x10 -o "$tmp/out.png"
+expect_bad "bad distance" render $map -d 12x -o "$tmp/out.png"
+expect_bad "nan position" render $map -p nan,3 -o "$tmp/out.png"
+expect_bad "inf position" render $map -p 1,inf -o "$tmp/out.png"
+expect_bad "unknown kernel" render $map -k warp -o "$tmp/out.png"
+expect_bad "unknown mode" render $map -m fast -o "$tmp/out.png"
+expect_bad "unknown isa" render $map --isa mmx -o "$tmp/out.png"
+expect_bad "unwritable output" render $map -o "$tmp/no/such/dir/out.png"
+expect_bad "unknown extension" render $map -o "$tmp/out.gif"
+expect_bad "no output" render $map
+expect_bad "unknown command" frobnicate
+expect_bad "unknown genmap style" genmap volcano -o "$tmp/v"
+expect_bad "course on a 1x1 map" render maps/test/flat-1 -m course -o "$tmp/out.png"
+
+for cmd in "" render kernels verify genmap; do
+  "$retro" $cmd --help >/dev/null 2>&1 || { echo "FAIL: retro $cmd --help"; fails=$((fails + 1)); }
+done
+"$retro" render $map -s 64x48 -o "$tmp/ok.png" && [ -s "$tmp/ok.png" ] || { echo "FAIL: render to png"; fails=$((fails + 1)); }
+"$retro" render $map -s 64x48 -m course -k naive -o "$tmp/ok.ppm" && head -c 2 "$tmp/ok.ppm" | grep -q P6 ||
+  { echo "FAIL: render to ppm"; fails=$((fails + 1)); }
+"$retro" kernels | awk '{print $1}' | grep -qx naive || { echo "FAIL: kernels lists naive first column"; fails=$((fails + 1)); }
+echo "cli: $fails failures"
+[ "$fails" -eq 0 ]

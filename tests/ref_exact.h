@@ -1,0 +1,11 @@
+/* An independent implementation of mode exact, written from SEMANTICS.md alone (it shares no
+ * code with src/): if it and naive agree on poses neither was tuned on, both read the
+ * specification the same way. */
+#ifndef RETRO_REF_EXACT_H
+#define RETRO_REF_EXACT_H
+
+#include "render.h"
+
+void ref_exact_render(const player_t *p, ctx_t *c);
+
+#endif
