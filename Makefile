@@ -18,11 +18,11 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SA
 CXXFLAGS ?= $(OPT) -g
 ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
 
-PKGS_LIB  := spng
+PKGS_LIB  := spng hwloc
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
-LDLIBS     = $(PKG_LIBS) -lm
+LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
 LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
 CLI_SRC  := $(wildcard src/cli/*.c)
@@ -51,15 +51,18 @@ help: ## list the targets
 deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
 
+# Per-file flags: OpenMP only where threads are made.
+$(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o: CFLAGS_FILE := -fopenmp
+
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(ALLCFLAGS) $(PKG_CFLAGS) -c $< -o $@
+	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(PKG_CFLAGS) -c $< -o $@
 
 $(BUILD)/count/%.o: src/%.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting writes)")
-	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_COUNT_WRITES -c $< -o $@
+	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) -DRETRO_COUNT_WRITES -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	$(Q)rm -f $@ && ar rcs $@ $^

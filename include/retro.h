@@ -83,6 +83,15 @@ typedef struct retro_ctx {
     int hmax_value;
     int threads;        /* requested threads for parallel kernels (0 = default) */
     void *pool;         /* owned by parallel kernels */
+    /* SIMD kernels (src/simd_map.c): colour | height packed into one uint32 per cell, so one
+     * load or gather fetches both. Rebuilt only when the map pointers or S change; like the
+     * height maximum, call retro_ctx_map_changed() after editing either map in place. */
+    uint32_t *simd_cells;               /* capacity simd_cells_cap cells */
+    size_t simd_cells_cap;
+    const uint8_t *simd_height_map;     /* the maps simd_cells was built from */
+    const uint32_t *simd_color_map;
+    int simd_map_size;
+    int simd_cells_ok;                  /* every colour had a zero low byte: packing is lossless */
 } retro_ctx;
 
 void retro_ctx_init(retro_ctx *rc);
@@ -94,6 +103,9 @@ void retro_ctx_map_changed(retro_ctx *rc);
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c);
 
 typedef void (*retro_kernel_fn)(const retro_frame *f, retro_ctx *rc);
+/* Renders columns [u0, u1) (0-based). In mode course qx[d], qy[d] hold the positions of column
+ * u0 on entry and of column u1 on return. Threaded kernels run strips of single-thread ones. */
+typedef void (*retro_strip_fn)(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
 /* CPU features a kernel may require. */
 enum {
@@ -115,6 +127,7 @@ typedef struct retro_kernel {
     unsigned modes;       /* RETRO_MODE_BIT() of the modes it renders */
     unsigned flags;       /* RETRO_KF_* */
     const char *summary;  /* one line for `retro kernels` */
+    retro_strip_fn strip; /* column-strip entry point, or NULL (naive, threaded kernels) */
 } retro_kernel;
 
 extern const retro_kernel retro_kernels[];
@@ -132,6 +145,12 @@ unsigned retro_cpu_features(void);
 /* Forces a lower ISA level; returns RETRO_EINVAL for an unknown name. */
 retro_err retro_cpu_limit(const char *level);
 const char *retro_cpu_level_name(unsigned features);
+
+/* Threads a threaded kernel uses with rc: rc->threads if set, else OMP_NUM_THREADS, else the
+ * number of cores. */
+int retro_ctx_threads(const retro_ctx *rc);
+/* One line saying how threads are bound to cores here (hwloc), for reports. */
+const char *retro_ctx_binding(retro_ctx *rc);
 
 /* Validates, sets up and renders one frame with kernel k. */
 retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode,

@@ -61,17 +61,18 @@ static void course_column(const retro_frame *f, float *qx, float *qy, int u)
     span(f, u, y, f->H, f->sky);
 }
 
+void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1)
+{
+    for (int u = u0; u < u1; u++) {
+        if (f->mode == RETRO_MODE_EXACT)
+            exact_column(f, u);
+        else
+            course_column(f, qx, qy, u);
+    }
+}
+
 void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc)
 {
-    if (f->mode == RETRO_MODE_EXACT) {
-        for (int u = 0; u < f->W; u++)
-            exact_column(f, u);
-        return;
-    }
-    for (int d = 1; d < f->D; d++) {
-        rc->qx[d] = f->lx[d];
-        rc->qy[d] = f->ly[d];
-    }
-    for (int u = 0; u < f->W; u++)
-        course_column(f, rc->qx, rc->qy, u);
+    retro_course_start(f, rc->qx, rc->qy);
+    retro_strip_ybuffer(f, rc->qx, rc->qy, 0, f->W);
 }

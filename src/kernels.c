@@ -7,9 +7,12 @@
 #define BOTH (RETRO_MODE_BIT(RETRO_MODE_EXACT) | RETRO_MODE_BIT(RETRO_MODE_COURSE))
 
 const retro_kernel retro_kernels[] = {
-    {"naive", retro_kernel_naive, 0, BOTH, 0, "painter, back to front: the reference"},
+    {"naive", retro_kernel_naive, 0, BOTH, 0, "painter, back to front: the reference", NULL},
     {"ybuffer", retro_kernel_ybuffer, 0, BOTH, RETRO_KF_WRITE_ONCE,
-     "front to back with a per-column y-buffer, each pixel written once"},
+     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer},
+    /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
+    {"omp", retro_kernel_omp, 0, BOTH, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
+     "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL},
 };
 
 const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
@@ -41,8 +44,3 @@ const retro_kernel *retro_kernel_best(retro_mode mode)
     return best;
 }
 
-/* Parallel kernels own a pool in the context; until one lands there is nothing to free. */
-void retro_pool_free(retro_ctx *rc)
-{
-    rc->pool = NULL;
-}

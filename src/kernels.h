@@ -4,7 +4,16 @@
 
 #include "retro.h"
 
+/* Course-mode accumulators at column 1: qx[d] = lx[d], qy[d] = ly[d]. */
+void retro_course_start(const retro_frame *f, float *qx, float *qy);
+/* Advances the course-mode accumulators over columns [u0, u1) without sampling, with the same
+ * float additions a strip performs, so any strip can start at any column bit-exactly. */
+void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+
+void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+
 void retro_kernel_naive(const retro_frame *f, retro_ctx *rc);
 void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_omp(const retro_frame *f, retro_ctx *rc);
 
 #endif

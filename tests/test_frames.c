@@ -128,12 +128,15 @@ Test(kernels, identical_to_naive_on_random_poses)
                     const retro_kernel *kr = &retro_kernels[k];
                     if (!retro_kernel_runs_here(kr) || !retro_kernel_has_mode(kr, (retro_mode)mode))
                         continue;
-                    memset(out, 0xab, sizeof(uint32_t) * (size_t)(W * H));
-                    render_with(kr->name, (retro_mode)mode, &p, &c);
-                    char what[128];
-                    snprintf(what, sizeof what, "%s/%s at isa %s, pose %d", kr->name,
-                             retro_mode_name((retro_mode)mode), levels[l], n);
-                    compare(ref, out, W, H, what);
+                    int tmax = kr->flags & RETRO_KF_THREADED ? 3 : 0;
+                    for (int t = tmax ? 1 : 0; t <= tmax; t++) {
+                        memset(out, 0xab, sizeof(uint32_t) * (size_t)(W * H));
+                        render_threads(kr->name, (retro_mode)mode, &p, &c, t);
+                        char what[128];
+                        snprintf(what, sizeof what, "%s/%s at isa %s, %d threads, pose %d", kr->name,
+                                 retro_mode_name((retro_mode)mode), levels[l], t, n);
+                        compare(ref, out, W, H, what);
+                    }
                 }
             }
             retro_cpu_limit(NULL);

@@ -63,10 +63,16 @@ void noise_map(retro_map *m, int S, uint64_t seed)
 
 void render_with(const char *kernel, retro_mode mode, const player_t *p, ctx_t *c)
 {
+    render_threads(kernel, mode, p, c, 0);
+}
+
+void render_threads(const char *kernel, retro_mode mode, const player_t *p, ctx_t *c, int threads)
+{
     const retro_kernel *k = retro_kernel_find(kernel);
     cr_assert(k, "no kernel %s", kernel);
     retro_ctx rc;
     retro_ctx_init(&rc);
+    rc.threads = threads;
     retro_err e = retro_render(&rc, k, mode, p, c);
     retro_ctx_free(&rc);
     cr_assert_eq(e, RETRO_OK, "%s/%s: %s", kernel, retro_mode_name(mode), retro_strerror(e));

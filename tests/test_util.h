@@ -20,5 +20,7 @@ void noise_map(retro_map *m, int S, uint64_t seed);
 uint64_t rng_next(uint64_t *state);
 /* Renders with kernel NAME (the test fails if it does not return RETRO_OK). */
 void render_with(const char *kernel, retro_mode mode, const player_t *p, ctx_t *c);
+/* The same with a thread count for threaded kernels (0: the default). */
+void render_threads(const char *kernel, retro_mode mode, const player_t *p, ctx_t *c, int threads);
 
 #endif

@@ -33,6 +33,11 @@ int cmd_kernels(int argc, char **argv)
         printf("%-14s %-13s %-4s %-7s %s\n", k->name, modes, retro_kernel_runs_here(k) ? "yes" : "no",
                k->cpu ? retro_cpu_level_name(k->cpu) : "-", k->summary);
     }
-    printf("# isa: %s\n", retro_cpu_level_name(retro_cpu_features()));
+    retro_ctx rc;
+    retro_ctx_init(&rc);
+    printf("# isa: %s (RETRO_ISA or --isa lowers it)\n", retro_cpu_level_name(retro_cpu_features()));
+    printf("# threads: %d (OMP_NUM_THREADS or --threads)\n", retro_ctx_threads(&rc));
+    printf("# binding: %s\n", retro_ctx_binding(&rc));
+    retro_ctx_free(&rc);
     return 0;
 }

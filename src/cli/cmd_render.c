@@ -11,6 +11,7 @@ static void help(void)
 {
     printf("usage: retro render MAP [-k KERNEL] [-m exact|course] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
+           "                        [--threads N]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "  -k KERNEL   kernel (default: the fastest this CPU runs for the mode; retro kernels)\n"
@@ -22,6 +23,7 @@ static void help(void)
            "  -a ANGLE    degrees, counter-clockwise from +x (default 0)\n"
            "  --sky HEX   sky colour RRGGBB (default 66a3ff)\n"
            "  --isa L     highest ISA level to use: none, sse2, avx2, avx512 (also RETRO_ISA)\n"
+           "  --threads N threads for threaded kernels (default OMP_NUM_THREADS or all cores)\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n");
 }
 
@@ -30,7 +32,7 @@ int cmd_render(int argc, char **argv)
     const char *map_path = NULL, *out_path = NULL, *kname = NULL;
     retro_mode mode = RETRO_MODE_EXACT;
     int W = 640, H = 480, have_pos = 0, have_z = 0;
-    long D = 800, z = 0, angle = 0;
+    long D = 800, z = 0, angle = 0, threads = 0;
     float x = 0, y = 0;
     uint32_t sky = 0x66a3ff00u;
     for (int i = 1; i < argc; i++) {
@@ -77,6 +79,9 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--isa")) {
             if (retro_cpu_limit(v))
                 return cli_error("render", "unknown ISA level '%s' (none, sse2, avx2, avx512)", v);
+        } else if (!strcmp(a, "--threads")) {
+            if (cli_int(v, 1, 64, &threads))
+                return cli_error("render", "bad thread count '%s' (1..64)", v);
         } else if (!strcmp(a, "-o"))
             out_path = v;
         else
@@ -119,6 +124,7 @@ int cmd_render(int argc, char **argv)
     ctx_t c = {W, H, m.size, (int)D, sky, m.height, m.color, out};
     retro_ctx rc;
     retro_ctx_init(&rc);
+    rc.threads = (int)threads;
     retro_err e = retro_render(&rc, k, mode, &p, &c);
     int status = 0;
     if (e)

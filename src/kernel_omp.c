@@ -1,0 +1,72 @@
+/* omp: columns split between threads in chunks of whole columns, each chunk rendered by the
+ * fastest single-thread kernel's strip. Splitting columns (not the distances of one slice)
+ * keeps every thread's work independent: a column's y-buffer lives in one thread's registers,
+ * so there is nothing to share, and no barrier per distance.
+ *
+ * Mode course accumulates each line's position column by column. A thread keeps its own
+ * accumulators, starts them at column 1 and, before each chunk it takes, advances them over
+ * the columns other threads rendered with the same additions (retro_course_advance), so at
+ * every column they hold exactly the values the single-thread reference has there.
+ *
+ * Schedule: dynamic, chunks of RETRO_OMP_CHUNK columns (a multiple of 16 so chunk edges fall
+ * on 64-byte lines of out and SIMD groups stay whole); chosen by measurement (README). */
+#include <omp.h>
+#include <stdlib.h>
+
+#include "kernels.h"
+#include "omp_pool.h"
+
+#define RETRO_OMP_CHUNK 32
+
+/* The strip of the fastest single-thread kernel this CPU runs for the mode. */
+static retro_strip_fn best_strip(retro_mode mode)
+{
+    retro_strip_fn best = NULL;
+    for (size_t i = 0; i < retro_kernel_count; i++) {
+        const retro_kernel *k = &retro_kernels[i];
+        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode))
+            best = k->strip;
+    }
+    return best;
+}
+
+static int chunk_columns(void)
+{
+    static int chunk;
+    if (!chunk) {
+        const char *e = getenv("RETRO_OMP_CHUNK");
+        int c = e ? atoi(e) : 0;
+        chunk = c > 0 ? c : RETRO_OMP_CHUNK;
+    }
+    return chunk;
+}
+
+void retro_kernel_omp(const retro_frame *f, retro_ctx *rc)
+{
+    retro_strip_fn strip = best_strip(f->mode);
+    int threads = retro_pool_threads(rc);
+    retro_pool *pool = retro_pool_get(rc, threads, f->D);
+    if (!pool) { /* out of memory for scratch: render single-threaded, still exact */
+        retro_course_start(f, rc->qx, rc->qy);
+        strip(f, rc->qx, rc->qy, 0, f->W);
+        return;
+    }
+    const int chunk = chunk_columns();
+    const int chunks = (f->W + chunk - 1) / chunk;
+#pragma omp parallel num_threads(threads)
+    {
+        int t = omp_get_thread_num();
+        retro_pool_bind(pool, t);
+        float *qx = retro_pool_qx(pool, t), *qy = retro_pool_qy(pool, t);
+        retro_course_start(f, qx, qy);
+        int at = 0;
+        /* Dynamic chunks are handed out in increasing order, so a thread only moves forward. */
+#pragma omp for schedule(dynamic, 1) nowait
+        for (int c = 0; c < chunks; c++) {
+            int u0 = c * chunk, u1 = u0 + chunk < f->W ? u0 + chunk : f->W;
+            retro_course_advance(f, qx, qy, at, u0);
+            strip(f, qx, qy, u0, u1);
+            at = u1;
+        }
+    }
+}
