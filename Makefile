@@ -42,7 +42,7 @@ RETRO    := $(BIN)/retro
 TESTS    := $(BIN)/retro-tests
 COUNT_TESTS := $(BIN)/retro-count-tests
 
-.PHONY: all help deps check verify verify-full demo maps asan clean install
+.PHONY: all help deps check verify demo maps asan clean install submission
 all: $(RETRO) ## build the library and the retro CLI
 
 help: ## list the targets
@@ -87,7 +87,7 @@ maps: $(RETRO) ## generate the default scenes and the analytic test maps under m
 
 check: deps ## run the tests (installs what is missing first)
 	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS)
-	$(Q)sh scripts/make-maps.sh $(RETRO) test
+	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
 
 verify: $(RETRO) ## every kernel in every mode against naive, byte for byte (full case set)
@@ -102,6 +102,10 @@ demo: deps ## render the default scenes to results/*.png
 asan: ## the tests under AddressSanitizer + UndefinedBehaviorSanitizer
 	$(Q)$(MAKE) --no-print-directory check BUILD=build/asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+
+submission: ## the single-file course render.c (results/submission/render.c)
+	$(Q)sh scripts/make-submission.sh results/submission/render.c
+	@echo "  GEN     results/submission/render.c"
 
 PREFIX ?= /usr/local
 install: $(RETRO) $(LIB) ## install retro, libretro.a and the headers under PREFIX

@@ -82,6 +82,8 @@ typedef struct retro_ctx {
     int hmax_size;
     int hmax_value;
     int threads;        /* requested threads for parallel kernels (0 = default) */
+    float *tscratch;    /* pthreads kernel: per-thread course accumulators */
+    size_t tscratch_cap;
     void *pool;         /* owned by parallel kernels */
     /* SIMD kernels (src/simd_map.c): colour | height packed into one uint32 per cell, so one
      * load or gather fetches both. Rebuilt only when the map pointers or S change; like the

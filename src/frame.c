@@ -24,13 +24,18 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->ybuf);
     free(rc->qx);
     free(rc->qy);
+    free(rc->tscratch);
+    free(rc->simd_cells);
+#ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
+#endif
     memset(rc, 0, sizeof *rc);
 }
 
 void retro_ctx_map_changed(retro_ctx *rc)
 {
     rc->hmax_map = NULL;
+    rc->simd_height_map = NULL;
 }
 
 /* Grows a buffer to n elements; memory only ever grows so steady-state frames never allocate. */
@@ -70,29 +75,6 @@ static int map_max(const uint8_t *h, size_t n)
     for (size_t i = 0; i < n; i++)
         m = h[i] > m ? h[i] : m;
     return m;
-}
-
-int retro_exact_row(float kd, float half_h, int H, int64_t dh)
-{
-    float vf = kd * (float)dh + half_h;
-    if (vf >= (float)H)
-        return H;
-    if (vf >= 0.0f)
-        return (int)vf; /* vf is non-negative: truncation is the floor */
-    return 0;
-}
-
-int retro_course_row(float cw2, int ch2, int H, int64_t dh, int d)
-{
-    float f = cw2 * (float)dh / (float)d;
-    /* The course truncates, adds H/2 and clamps; done in double so a huge value saturates
-     * instead of overflowing int. */
-    double v = trunc((double)f) + (double)ch2;
-    if (v >= (double)H)
-        return H;
-    if (v <= 0.0)
-        return 0;
-    return (int)v;
 }
 
 float retro_float_mod(float f, float k)
@@ -223,20 +205,6 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         setup_exact(rc, f, p->angle);
     else
         setup_course(rc, f, p);
-    return RETRO_OK;
-}
-
-retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode, const player_t *p,
-                       ctx_t *c)
-{
-    if (!k)
-        return RETRO_EINVAL;
-    if (!retro_kernel_has_mode(k, mode) || !retro_kernel_runs_here(k))
-        return RETRO_EUNSUPPORTED;
-    retro_err e = retro_frame_setup(rc, mode, p, c);
-    if (e)
-        return e;
-    k->fn(&rc->frame, rc);
     return RETRO_OK;
 }
 

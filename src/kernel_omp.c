@@ -18,18 +18,6 @@
 
 #define RETRO_OMP_CHUNK 32
 
-/* The strip of the fastest single-thread kernel this CPU runs for the mode. */
-static retro_strip_fn best_strip(retro_mode mode)
-{
-    retro_strip_fn best = NULL;
-    for (size_t i = 0; i < retro_kernel_count; i++) {
-        const retro_kernel *k = &retro_kernels[i];
-        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode))
-            best = k->strip;
-    }
-    return best;
-}
-
 static int chunk_columns(void)
 {
     static int chunk;
@@ -43,7 +31,7 @@ static int chunk_columns(void)
 
 void retro_kernel_omp(const retro_frame *f, retro_ctx *rc)
 {
-    retro_strip_fn strip = best_strip(f->mode);
+    retro_strip_fn strip = retro_best_strip(f->mode);
     int threads = retro_pool_threads(rc);
     retro_pool *pool = retro_pool_get(rc, threads, f->D);
     if (!pool) { /* out of memory for scratch: render single-threaded, still exact */

@@ -12,29 +12,37 @@
 #include "kernels.h"
 #include "retro_internal.h"
 
-/* Paints rows y+1..v of column u (0-based) and returns the new y-buffer. */
-static inline int span(const retro_frame *f, int u, int y, int v, uint32_t color)
+/* Paints rows y+1..v of column u (0-based) of a W-wide, H-high frame; returns the new y-buffer.
+ * Frame fields are passed as values: a pixel store may alias an int field of the frame, so
+ * the compiler would reload every field after every store. */
+static inline int span(uint32_t *out, int W, int H, int u, int y, int v, uint32_t color)
 {
-    ptrdiff_t i = (ptrdiff_t)(f->H - y - 1) * f->W + u;
-    for (int r = y + 1; r <= v; r++, i -= f->W)
-        RETRO_PUT(f->out, (size_t)i, color);
+    ptrdiff_t i = (ptrdiff_t)(H - y - 1) * W + u;
+    for (int r = y + 1; r <= v; r++, i -= W)
+        RETRO_PUT(out, (size_t)i, color);
     return v;
 }
 
 static void exact_column(const retro_frame *f, int u)
 {
-    const float rx = f->rx[u], ry = f->ry[u];
-    const int S = f->S;
+    const float rx = f->rx[u], ry = f->ry[u], x0 = f->x0, y0 = f->y0, half_h = f->half_h;
+    const int S = f->S, W = f->W, H = f->H, D = f->D;
+    const int64_t height = f->height;
+    const uint8_t *hm = f->height_map;
+    const uint32_t *cm = f->color_map;
+    const float *kd = f->kd;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
     int y = 0;
-    for (int d = 1; d < f->D && y < f->vcap[d]; d++) {
-        float qx = f->x0 + (float)d * rx;
-        float qy = f->y0 + (float)d * ry;
+    for (int d = 1; d < D && y < vcap[d]; d++) {
+        float qx = x0 + (float)d * rx;
+        float qy = y0 + (float)d * ry;
         size_t idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
-        int v = retro_exact_row(f->kd[d], f->half_h, f->H, f->height_map[idx] - f->height);
+        int v = retro_exact_row(kd[d], half_h, H, hm[idx] - height);
         if (v > y)
-            y = span(f, u, y, v, f->color_map[idx]);
+            y = span(out, W, H, u, y, v, cm[idx]);
     }
-    span(f, u, y, f->H, f->sky);
+    span(out, W, H, u, y, H, f->sky);
 }
 
 /* Mode course accumulates each line's position column by column (qx += sx after every
@@ -43,22 +51,29 @@ static void exact_column(const retro_frame *f, int u)
  * sequence of additions exactly. */
 static void course_column(const retro_frame *f, float *qx, float *qy, int u)
 {
-    const int S = f->S;
+    const int S = f->S, W = f->W, H = f->H, D = f->D, ch2 = f->ch2;
+    const float k = (float)(S - 1), inv_k = 1.0f / k, cw2 = f->cw2;
+    const int64_t height = f->height;
+    const uint8_t *hm = f->height_map;
+    const uint32_t *cm = f->color_map;
+    const float *sx = f->sx, *sy = f->sy;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
     int y = 0, d = 1;
-    for (; d < f->D && y < f->vcap[d]; d++) {
-        size_t idx = (size_t)retro_course_cell(qy[d], S) * (size_t)S +
-                     (size_t)retro_course_cell(qx[d], S);
-        int v = retro_course_row(f->cw2, f->ch2, f->H, f->height_map[idx] - f->height, d);
+    for (; d < D && y < vcap[d]; d++) {
+        size_t idx = (size_t)retro_course_cell_fast(qy[d], k, inv_k) * (size_t)S +
+                     (size_t)retro_course_cell_fast(qx[d], k, inv_k);
+        int v = retro_course_row(cw2, ch2, H, hm[idx] - height, d);
         if (v > y)
-            y = span(f, u, y, v, f->color_map[idx]);
-        qx[d] += f->sx[d];
-        qy[d] += f->sy[d];
+            y = span(out, W, H, u, y, v, cm[idx]);
+        qx[d] += sx[d];
+        qy[d] += sy[d];
     }
-    for (; d < f->D; d++) {
-        qx[d] += f->sx[d];
-        qy[d] += f->sy[d];
+    for (; d < D; d++) {
+        qx[d] += sx[d];
+        qy[d] += sy[d];
     }
-    span(f, u, y, f->H, f->sky);
+    span(out, W, H, u, y, H, f->sky);
 }
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1)

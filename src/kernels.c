@@ -5,12 +5,12 @@
 #include "kernels.h"
 
 #define BOTH (RETRO_MODE_BIT(RETRO_MODE_EXACT) | RETRO_MODE_BIT(RETRO_MODE_COURSE))
-
 const retro_kernel retro_kernels[] = {
     {"naive", retro_kernel_naive, 0, BOTH, 0, "painter, back to front: the reference", NULL},
     {"ybuffer", retro_kernel_ybuffer, 0, BOTH, RETRO_KF_WRITE_ONCE,
      "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer},
-    /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
+    {"pthreads", retro_kernel_pthreads, 0, BOTH, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
+     "column chunks on POSIX threads started per frame: the submission's engine", NULL},
     {"omp", retro_kernel_omp, 0, BOTH, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL},
 };
@@ -44,3 +44,27 @@ const retro_kernel *retro_kernel_best(retro_mode mode)
     return best;
 }
 
+retro_strip_fn retro_best_strip(retro_mode mode)
+{
+    retro_strip_fn best = NULL;
+    for (size_t i = 0; i < retro_kernel_count; i++) {
+        const retro_kernel *k = &retro_kernels[i];
+        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode))
+            best = k->strip;
+    }
+    return best;
+}
+
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode, const player_t *p,
+                       ctx_t *c)
+{
+    if (!k)
+        return RETRO_EINVAL;
+    if (!retro_kernel_has_mode(k, mode) || !retro_kernel_runs_here(k))
+        return RETRO_EUNSUPPORTED;
+    retro_err e = retro_frame_setup(rc, mode, p, c);
+    if (e)
+        return e;
+    k->fn(&rc->frame, rc);
+    return RETRO_OK;
+}

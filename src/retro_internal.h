@@ -9,30 +9,102 @@
 
 #include "retro.h"
 
-/* Row v in 0..H of a sample in mode exact (SEMANTICS.md step 6). */
-int retro_exact_row(float kd, float half_h, int H, int64_t dh);
-/* Row v in 0..H of a sample in mode course. */
-int retro_course_row(float cw2, int ch2, int H, int64_t dh, int d);
+/* Helpers below are static inline in a header; in the single-file submission they become part
+ * of one .c file, where clang would warn about the ones it does not call. */
+#define RETRO_HELPER static inline __attribute__((unused))
+
 /* The course's float_mod. */
 float retro_float_mod(float f, float k);
 /* Releases the thread pool of parallel kernels, if any. */
 void retro_pool_free(retro_ctx *rc);
 
+/* Row v in 0..H of a sample in mode exact (SEMANTICS.md step 6). */
+RETRO_HELPER int retro_exact_row(float kd, float half_h, int H, int64_t dh)
+{
+    float vf = kd * (float)dh + half_h;
+    if (vf >= (float)H)
+        return H;
+    if (vf >= 0.0f)
+        return (int)vf; /* vf is non-negative: truncation is the floor */
+    return 0;
+}
+
+/* Row v in 0..H of a sample in mode course: the course truncates, adds H/2 and clamps; done in
+ * double so a huge value saturates instead of overflowing int. */
+RETRO_HELPER int retro_course_row(float cw2, int ch2, int H, int64_t dh, int d)
+{
+    float f = cw2 * (float)dh / (float)d;
+    double v = trunc((double)f) + (double)ch2;
+    if (v >= (double)H)
+        return H;
+    if (v <= 0.0)
+        return 0;
+    return (int)v;
+}
+
 /* floor(q) mod S in [0, S). |q| < 2^31 holds for every valid frame (D <= 2^22). */
-static inline int retro_cell(float q, int S)
+RETRO_HELPER int retro_cell(float q, int S)
 {
     int i = (int)floorf(q) % S;
     return i < 0 ? i + S : i;
 }
 
-/* Course-mode cell: (int)float_mod(q, S - 1). */
-static inline int retro_course_cell(float q, int S)
+/* Course-mode cell: (int)float_mod(q, S - 1). A non-finite q (only reachable from positions
+ * near FLT_MAX, where the course's C is undefined) reads cell 0 instead of converting NaN. */
+RETRO_HELPER int retro_course_cell(float q, int S)
 {
-    return (int)retro_float_mod(q, (float)(S - 1));
+    float m = retro_float_mod(q, (float)(S - 1));
+    return m >= 0 ? (int)m : 0;
+}
+
+/* fmodf(q, k) without the library call or a division, bit for bit, for k a positive integer
+ * below 2^15 and inv_k = 1.0f / k. For |q| < 2^22, q * inv_k is within 2^-23 relative of q/k,
+ * so n = trunc(q * inv_k) is the true quotient or off by one, and only when q is within that
+ * margin of a multiple of k. n*k is an integer below 2^24, so exact. q - n*k is then the true
+ * remainder, or differs from it by k: either a value so close to q that the subtraction is
+ * exact (Sterbenz), or k plus a remainder tiny against k, which is representable. One
+ * correction by k lands on the true remainder, which is representable, so it is exact too.
+ * Larger or non-finite q takes the library path. */
+RETRO_HELPER float retro_fmod_fast(float q, float k, float inv_k)
+{
+    if (!(fabsf(q) < 4194304.0f))
+        return fmodf(q, k);
+    float r = q - truncf(q * inv_k) * k;
+    if (q >= 0.0f) {
+        if (r < 0.0f)
+            r += k;
+        else if (r >= k)
+            r -= k;
+    } else {
+        if (r > 0.0f)
+            r -= k;
+        else if (r <= -k)
+            r += k;
+    }
+    return r == 0.0f ? copysignf(0.0f, q) : r;
+}
+
+/* The course's float_mod on top of retro_fmod_fast: the same rounding of res + k. */
+RETRO_HELPER float retro_float_mod_fast(float f, float k, float inv_k)
+{
+    float res = retro_fmod_fast(f, k, inv_k);
+    if (res < 0)
+        res += k;
+    if (res >= k)
+        res = 0;
+    return res;
+}
+
+/* retro_course_cell through retro_float_mod_fast; identical results, for fast kernels.
+ * k = S - 1 and inv_k = 1.0f / k are hoisted by the caller. */
+RETRO_HELPER int retro_course_cell_fast(float q, float k, float inv_k)
+{
+    float m = retro_float_mod_fast(q, k, inv_k);
+    return m >= 0 ? (int)m : 0;
 }
 
 /* The pixel (u, r), u and r 1-based, r from the bottom, as an index into out. */
-static inline size_t retro_pixel(int W, int H, int u, int r)
+RETRO_HELPER size_t retro_pixel(int W, int H, int u, int r)
 {
     return (size_t)(H - r) * (size_t)W + (size_t)(u - 1);
 }

@@ -1,0 +1,48 @@
+#!/bin/sh
+# The generated submission, built alone with the course-style driver as the course builds it:
+# gcc and clang, -O0 -g with ASan+UBSan and -O3, -Wall -Wextra -pedantic, -lm only, and no
+# warning allowed. Then the course's public tests, and equality with `retro render -k naive
+# -m course` on seeded random poses and sizes.
+set -u
+retro=$1
+shared=${RETRO_SHARED:-../shared}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+sh scripts/make-submission.sh "$tmp/render.c" || { echo "FAIL: generation"; exit 1; }
+cp include/render.h tests/submission_driver.c "$tmp/"
+for cc in gcc clang; do
+  for flags in "-O0 -g -fsanitize=address -fsanitize=undefined" "-O3"; do
+    name="$cc$(echo "$flags" | cut -c1-3 | tr -d ' -')"
+    if ! (cd "$tmp" && $cc -Wall -Wextra -pedantic $flags -o "$name" render.c submission_driver.c -lm) \
+         >"$tmp/cc.log" 2>&1; then
+      fail "$cc $flags does not build: $(head -n 3 "$tmp/cc.log")"; continue
+    fi
+    [ -s "$tmp/cc.log" ] && fail "$cc $flags warns: $(head -n 3 "$tmp/cc.log")"
+    if [ -d "$shared/course" ]; then
+      (cd "$tmp" && "./$name" selftest "$(cd "$OLDPWD" && cd "$shared" && pwd)") >"$tmp/self.log" 2>&1 ||
+        fail "$cc $flags course tests: $(grep -v '^ok' "$tmp/self.log" | head -n 3)"
+    fi
+  done
+done
+[ -d "$shared/course" ] || echo "skipped: $shared/course absent: no course frames checked"
+
+# Random poses against naive mode course, on a generated map and the course maps when present.
+maps="maps/test/alpine-200 maps/test/checker-2"
+[ -d "$shared/course" ] && maps="$maps $shared/course/valley $shared/course/island"
+awk 'BEGIN { srand(9); for (i = 0; i < 48; i++)
+  printf "%d %d %d %.3f %.3f %d %d\n", 1 + int(rand() * 400), 1 + int(rand() * 300), int(rand() * 1200),
+    rand() * 5000 - 2000, rand() * 5000 - 2000, int(rand() * 500) - 100, int(rand() * 1440) - 720 }' >"$tmp/poses"
+n=0
+while read -r W H D x y z a; do
+  set -- $maps
+  shift $((n % $#)); map=$1; n=$((n + 1))
+  "$retro" render "$map" -k naive -m course -s "${W}x$H" -d "$D" -p "$x,$y" -z "$z" -a "$a" -o "$tmp/ref.ppm" ||
+    { fail "retro render $map pose $n"; continue; }
+  "$tmp/gccO3" frame "$map" "$W" "$H" "$D" "$x" "$y" "$z" "$a" "$tmp/got.ppm" &&
+    cmp -s "$tmp/ref.ppm" "$tmp/got.ppm" || fail "pose $n ($map ${W}x$H D $D at $x,$y z $z a $a) differs from naive"
+done <"$tmp/poses"
+echo "submission: $n random poses, $fails failures"
+[ "$fails" -eq 0 ]
