@@ -42,7 +42,7 @@ RETRO    := $(BIN)/retro
 TESTS    := $(BIN)/retro-tests
 COUNT_TESTS := $(BIN)/retro-count-tests
 
-.PHONY: all help deps check verify demo maps asan clean install submission
+.PHONY: all help deps check verify demo maps asan clean install submission accuracy
 all: $(RETRO) ## build the library and the retro CLI
 
 help: ## list the targets
@@ -102,6 +102,10 @@ demo: deps ## render the default scenes to results/*.png
 asan: ## the tests under AddressSanitizer + UndefinedBehaviorSanitizer
 	$(Q)$(MAKE) --no-print-directory check BUILD=build/asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+
+accuracy: $(RETRO) ## what accuracy costs: results/ACCURACY.md and a Pareto chart
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) accuracy
 
 submission: ## the single-file course render.c (results/submission/render.c)
 	$(Q)sh scripts/make-submission.sh results/submission/render.c

@@ -21,6 +21,9 @@ extern "C" {
 typedef enum {
     RETRO_MODE_EXACT = 0,  /* the specification done right, binary32 */
     RETRO_MODE_COURSE = 1, /* bit-compatible with the course's reference images */
+    RETRO_MODE_TRUTH = 2,  /* mode exact in binary64, the ground truth (docs/ACCURACY.md) */
+    RETRO_MODE_FIXED = 3,  /* integer-only fixed point in the inner loop */
+    RETRO_MODE_LOD = 4,    /* mode exact at distances whose step grows with distance */
     RETRO_MODE_COUNT
 } retro_mode;
 
@@ -38,6 +41,10 @@ typedef enum {
 #define RETRO_MAX_PIXELS (1L << 26)  /* W*H */
 #define RETRO_MAX_MAP 16384          /* S */
 #define RETRO_MAX_DISTANCE (1 << 22) /* D */
+
+#define RETRO_FX_POS 24  /* fractional bits of mode fixed's positions */
+#define RETRO_FX_PROJ 16 /* fractional bits of mode fixed's projection */
+#define RETRO_LOD_DEFAULT 0.02f
 
 /* Everything a kernel may read for one frame. Built by retro_frame_setup(). */
 typedef struct retro_frame {
@@ -62,8 +69,20 @@ typedef struct retro_frame {
     int ch2;           /* H/2 */
     const float *lx, *ly; /* [D] left endpoint of line d */
     const float *sx, *sy; /* [D] per-column step of line d */
-    /* both modes: vcap[d] = max over d' >= d of the projected row of a sample of height
-     * hmax; no sample at distance >= d can rise above it (entry D is 0). */
+    /* mode truth: exact's quantities in binary64 */
+    double cs_d, sn_d, x0_d, y0_d;
+    const double *rxd, *ryd; /* [W] */
+    const double *kdd;       /* [D] (0.5*W)/d */
+    /* mode fixed: positions with RETRO_FX_POS fractional bits, projection with RETRO_FX_PROJ */
+    int64_t x0_fx, y0_fx, half_h_fx;
+    const int64_t *rx_fx, *ry_fx; /* [W] */
+    const int64_t *kd_fx;         /* [D] */
+    /* mode lod: the sample distances, increasing from 1 */
+    const int *dist;
+    int ndist;
+    /* every mode: vcap[n] = max over n' >= n of the projected row of a sample of height hmax
+     * at the n'-th distance (distance n, or dist[n] in mode lod); no sample from there on
+     * can rise above it. The entry past the last distance is 0. */
     const int *vcap;
 } retro_frame;
 
@@ -77,6 +96,10 @@ typedef struct retro_ctx {
     int *vcap;          /* capacity cap_d + 1 */
     int *ybuf;          /* per-column y-buffer, capacity cap_w */
     float *qx, *qy;     /* course-mode accumulators per distance, capacity cap_d */
+    double *rxd, *ryd, *kdd;       /* mode truth */
+    int64_t *rx_fx, *ry_fx, *kd_fx; /* mode fixed */
+    int *dist;                     /* mode lod, capacity cap_d */
+    float lod;          /* mode lod's step growth (0: the default 0.02) */
     int cap_w, cap_d;
     const uint8_t *hmax_map; /* map whose maximum is cached in hmax_value */
     int hmax_size;

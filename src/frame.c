@@ -25,6 +25,13 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->qx);
     free(rc->qy);
     free(rc->tscratch);
+    free(rc->rxd);
+    free(rc->ryd);
+    free(rc->kdd);
+    free(rc->rx_fx);
+    free(rc->ry_fx);
+    free(rc->kd_fx);
+    free(rc->dist);
     free(rc->simd_cells);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
@@ -53,7 +60,9 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
     if (w > rc->cap_w) {
         size_t n = (size_t)w;
         if (grow((void **)&rc->rx, n, sizeof(float)) || grow((void **)&rc->ry, n, sizeof(float)) ||
-            grow((void **)&rc->ybuf, n, sizeof(int)))
+            grow((void **)&rc->ybuf, n, sizeof(int)) || grow((void **)&rc->rxd, n, sizeof(double)) ||
+            grow((void **)&rc->ryd, n, sizeof(double)) || grow((void **)&rc->rx_fx, n, sizeof(int64_t)) ||
+            grow((void **)&rc->ry_fx, n, sizeof(int64_t)))
             return RETRO_ENOMEM;
         rc->cap_w = w;
     }
@@ -62,7 +71,9 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
         if (grow((void **)&rc->kd, n, sizeof(float)) || grow((void **)&rc->lx, n, sizeof(float)) ||
             grow((void **)&rc->ly, n, sizeof(float)) || grow((void **)&rc->sx, n, sizeof(float)) ||
             grow((void **)&rc->sy, n, sizeof(float)) || grow((void **)&rc->qx, n, sizeof(float)) ||
-            grow((void **)&rc->qy, n, sizeof(float)) || grow((void **)&rc->vcap, n + 1, sizeof(int)))
+            grow((void **)&rc->qy, n, sizeof(float)) || grow((void **)&rc->vcap, n + 1, sizeof(int)) ||
+            grow((void **)&rc->kdd, n, sizeof(double)) || grow((void **)&rc->kd_fx, n, sizeof(int64_t)) ||
+            grow((void **)&rc->dist, n + 1, sizeof(int)))
             return RETRO_ENOMEM;
         rc->cap_d = d;
     }
@@ -95,19 +106,65 @@ static double wrap(float v, int s)
     return r;
 }
 
-static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
+/* cos and sin of the angle in double; a quarter turn only swaps and negates, so multiples of
+ * 90 degrees are exact. */
+static void direction(int angle, double *cs, double *sn)
 {
     int a = angle % 360;
     if (a < 0)
         a += 360;
     int q = a / 90, r = a % 90;
     double rad = (double)r * 3.14159265358979323846 / 180.0;
-    float c0 = (float)cos(rad), s0 = (float)sin(rad);
+    double c0 = cos(rad), s0 = sin(rad);
     static const int swap[4] = {0, 1, 0, 1};
-    static const float csign[4] = {1, -1, -1, 1}, ssign[4] = {1, 1, -1, -1};
-    /* A quarter turn only swaps and negates, so multiples of 90 degrees are exact. */
-    f->cs = csign[q] * (swap[q] ? s0 : c0);
-    f->sn = ssign[q] * (swap[q] ? c0 : s0);
+    static const double csign[4] = {1, -1, -1, 1}, ssign[4] = {1, 1, -1, -1};
+    *cs = csign[q] * (swap[q] ? s0 : c0);
+    *sn = ssign[q] * (swap[q] ? c0 : s0);
+}
+
+/* vcap over the frame's n-th distances (see retro_frame.vcap); row(n) projects hmax there. */
+static void cap_rows(retro_ctx *rc, int n, int (*row)(const retro_frame *, int, int64_t))
+{
+    const retro_frame *f = &rc->frame;
+    int64_t dh = (int64_t)f->hmax - f->height;
+    rc->vcap[n] = 0;
+    for (int i = n - 1; i >= 1; i--) {
+        int v = row(f, i, dh);
+        rc->vcap[i] = v > rc->vcap[i + 1] ? v : rc->vcap[i + 1];
+    }
+}
+
+static int row_exact(const retro_frame *f, int d, int64_t dh)
+{
+    return retro_exact_row(f->kd[d], f->half_h, f->H, dh);
+}
+
+static int row_lod(const retro_frame *f, int n, int64_t dh)
+{
+    return retro_exact_row(f->kd[f->dist[n]], f->half_h, f->H, dh);
+}
+
+static int row_truth(const retro_frame *f, int d, int64_t dh)
+{
+    return retro_truth_row(f->kdd[d], (double)f->H * 0.5, f->H, dh);
+}
+
+static int row_fixed(const retro_frame *f, int d, int64_t dh)
+{
+    return retro_fixed_row(f->kd_fx[d], f->half_h_fx, f->H, dh);
+}
+
+static int64_t to_fixed(double v, int bits)
+{
+    return llround(v * (double)(1LL << bits));
+}
+
+static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
+{
+    double cs, sn;
+    direction(angle, &cs, &sn);
+    f->cs = (float)cs;
+    f->sn = (float)sn;
 
     int W = f->W;
     for (int u = 1; u <= W; u++) {
@@ -121,12 +178,55 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
     f->half_h = 0.5f * (float)f->H;
     for (int d = 1; d < f->D; d++)
         rc->kd[d] = f->half_w / (float)d;
-    int64_t dh = (int64_t)f->hmax - f->height;
-    rc->vcap[f->D] = 0;
-    for (int d = f->D - 1; d >= 1; d--) {
-        int v = retro_exact_row(rc->kd[d], f->half_h, f->H, dh);
-        rc->vcap[d] = v > rc->vcap[d + 1] ? v : rc->vcap[d + 1];
+    if (f->mode != RETRO_MODE_LOD) {
+        cap_rows(rc, f->D, row_exact);
+        return;
     }
+    /* dist[1..ndist-1] are the sample distances; entry ndist closes vcap. */
+    double lambda = rc->lod > 0 ? rc->lod : RETRO_LOD_DEFAULT;
+    int n = 1;
+    for (int64_t d = 1; d < f->D; n++) {
+        rc->dist[n] = (int)d;
+        int64_t step = (int64_t)floor((double)d * lambda);
+        d += step > 1 ? step : 1;
+    }
+    f->ndist = n;
+    cap_rows(rc, n, row_lod);
+}
+
+static void setup_truth(retro_ctx *rc, retro_frame *f, const player_t *p)
+{
+    direction(p->angle, &f->cs_d, &f->sn_d);
+    f->x0_d = wrap(p->x, f->S);
+    f->y0_d = wrap(p->y, f->S);
+    int W = f->W;
+    for (int u = 1; u <= W; u++) {
+        double t = W > 1 ? (double)(2 * (int64_t)(u - 1) - (W - 1)) / (double)(W - 1) : 0.0;
+        rc->rxd[u - 1] = f->cs_d + t * f->sn_d;
+        rc->ryd[u - 1] = t * f->cs_d - f->sn_d;
+    }
+    for (int d = 1; d < f->D; d++)
+        rc->kdd[d] = 0.5 * (double)W / (double)d;
+}
+
+static void setup_fixed(retro_ctx *rc, retro_frame *f, const player_t *p)
+{
+    setup_truth(rc, f, p);
+    f->x0_fx = to_fixed(f->x0_d, RETRO_FX_POS);
+    f->y0_fx = to_fixed(f->y0_d, RETRO_FX_POS);
+    for (int u = 0; u < f->W; u++) {
+        rc->rx_fx[u] = to_fixed(rc->rxd[u], RETRO_FX_POS);
+        rc->ry_fx[u] = to_fixed(rc->ryd[u], RETRO_FX_POS);
+    }
+    for (int d = 1; d < f->D; d++)
+        rc->kd_fx[d] = to_fixed(rc->kdd[d], RETRO_FX_PROJ);
+    f->half_h_fx = to_fixed(0.5 * (double)f->H, RETRO_FX_PROJ);
+    cap_rows(rc, f->D, row_fixed);
+}
+
+static int row_course(const retro_frame *f, int d, int64_t dh)
+{
+    return retro_course_row(f->cw2, f->ch2, f->H, dh, d);
 }
 
 static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
@@ -145,19 +245,14 @@ static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
     }
     f->cw2 = (float)(f->W / 2);
     f->ch2 = f->H / 2;
-    int64_t dh = (int64_t)f->hmax - f->height;
-    rc->vcap[f->D] = 0;
-    for (int d = f->D - 1; d >= 1; d--) {
-        int v = retro_course_row(f->cw2, f->ch2, f->H, dh, d);
-        rc->vcap[d] = v > rc->vcap[d + 1] ? v : rc->vcap[d + 1];
-    }
+    cap_rows(rc, f->D, row_course);
 }
 
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c)
 {
     if (!rc || !p || !c || !c->height_map || !c->color_map || !c->out)
         return RETRO_EINVAL;
-    if (mode != RETRO_MODE_EXACT && mode != RETRO_MODE_COURSE)
+    if ((unsigned)mode >= RETRO_MODE_COUNT)
         return RETRO_EINVAL;
     int W = c->scr_width, H = c->scr_height, S = c->map_size;
     if (W < 1 || H < 1 || W > RETRO_MAX_SCREEN || H > RETRO_MAX_SCREEN ||
@@ -201,27 +296,37 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->sx = rc->sx;
     f->sy = rc->sy;
     f->vcap = rc->vcap;
-    if (mode == RETRO_MODE_EXACT)
-        setup_exact(rc, f, p->angle);
-    else
-        setup_course(rc, f, p);
+    f->rxd = rc->rxd;
+    f->ryd = rc->ryd;
+    f->kdd = rc->kdd;
+    f->rx_fx = rc->rx_fx;
+    f->ry_fx = rc->ry_fx;
+    f->kd_fx = rc->kd_fx;
+    f->dist = rc->dist;
+    switch (mode) {
+    case RETRO_MODE_COURSE: setup_course(rc, f, p); break;
+    case RETRO_MODE_TRUTH: setup_truth(rc, f, p); cap_rows(rc, f->D, row_truth); break;
+    case RETRO_MODE_FIXED: setup_fixed(rc, f, p); break;
+    default: setup_exact(rc, f, p->angle); break; /* exact and lod */
+    }
     return RETRO_OK;
 }
 
+static const char *const mode_names[RETRO_MODE_COUNT] = {"exact", "course", "truth", "fixed", "lod"};
+
 const char *retro_mode_name(retro_mode mode)
 {
-    return mode == RETRO_MODE_COURSE ? "course" : "exact";
+    return (unsigned)mode < RETRO_MODE_COUNT ? mode_names[mode] : "?";
 }
 
 int retro_mode_parse(const char *name, retro_mode *mode)
 {
-    if (!strcmp(name, "exact"))
-        *mode = RETRO_MODE_EXACT;
-    else if (!strcmp(name, "course"))
-        *mode = RETRO_MODE_COURSE;
-    else
-        return -1;
-    return 0;
+    for (int m = 0; m < RETRO_MODE_COUNT; m++)
+        if (!strcmp(name, mode_names[m])) {
+            *mode = (retro_mode)m;
+            return 0;
+        }
+    return -1;
 }
 
 const char *retro_strerror(retro_err e)

@@ -18,14 +18,32 @@ static void paint(const retro_frame *f, int u, int v, size_t idx)
         RETRO_PUT(f->out, retro_pixel(f->W, f->H, u, r), f->color_map[idx]);
 }
 
-static void exact(const retro_frame *f)
+/* Row v of sample (u, d) and its cell, in every mode but course (u 0-based). */
+static int sample(const retro_frame *f, int u, int d, size_t *idx)
 {
-    for (int d = f->D - 1; d >= 1; d--) {
+    switch (f->mode) {
+    case RETRO_MODE_TRUTH:
+        *idx = retro_truth_sample(f, u, d);
+        return retro_truth_row(f->kdd[d], 0.5 * (double)f->H, f->H, f->height_map[*idx] - f->height);
+    case RETRO_MODE_FIXED:
+        *idx = retro_fixed_sample(f, u, d);
+        return retro_fixed_row(f->kd_fx[d], f->half_h_fx, f->H, f->height_map[*idx] - f->height);
+    default:
+        *idx = retro_exact_sample(f, u, d);
+        return retro_exact_row(f->kd[d], f->half_h, f->H, f->height_map[*idx] - f->height);
+    }
+}
+
+/* Modes exact, truth, fixed: every d from D-1 down to 1; mode lod: its distances, farthest
+ * first. */
+static void direct(const retro_frame *f)
+{
+    int lod = f->mode == RETRO_MODE_LOD;
+    for (int n = (lod ? f->ndist : f->D) - 1; n >= 1; n--) {
+        int d = lod ? f->dist[n] : n;
         for (int u = 1; u <= f->W; u++) {
-            float qx = f->x0 + (float)d * f->rx[u - 1];
-            float qy = f->y0 + (float)d * f->ry[u - 1];
-            size_t idx = (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
-            int v = retro_exact_row(f->kd[d], f->half_h, f->H, f->height_map[idx] - f->height);
+            size_t idx;
+            int v = sample(f, u - 1, d, &idx);
             paint(f, u, v, idx);
         }
     }
@@ -53,5 +71,5 @@ void retro_kernel_naive(const retro_frame *f, retro_ctx *rc)
     if (f->mode == RETRO_MODE_COURSE)
         course(f);
     else
-        exact(f);
+        direct(f);
 }

@@ -45,6 +45,37 @@ static void exact_column(const retro_frame *f, int u)
     span(out, W, H, u, y, H, f->sky);
 }
 
+/* Modes truth, fixed and lod: the same walk over the shared sample arithmetic. They are
+ * for showing what accuracy costs, so clarity wins over the last cycle here; `mode` is a
+ * constant in each caller, so the switch folds away. */
+static inline void variant_column(const retro_frame *f, int u, retro_mode mode)
+{
+    const int W = f->W, H = f->H, n_end = mode == RETRO_MODE_LOD ? f->ndist : f->D;
+    const int64_t height = f->height;
+    const uint8_t *hm = f->height_map;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
+    int y = 0;
+    for (int n = 1; n < n_end && y < vcap[n]; n++) {
+        size_t idx;
+        int v;
+        if (mode == RETRO_MODE_TRUTH) {
+            idx = retro_truth_sample(f, u, n);
+            v = retro_truth_row(f->kdd[n], 0.5 * (double)H, H, hm[idx] - height);
+        } else if (mode == RETRO_MODE_FIXED) {
+            idx = retro_fixed_sample(f, u, n);
+            v = retro_fixed_row(f->kd_fx[n], f->half_h_fx, H, hm[idx] - height);
+        } else {
+            int d = f->dist[n];
+            idx = retro_exact_sample(f, u, d);
+            v = retro_exact_row(f->kd[d], f->half_h, H, hm[idx] - height);
+        }
+        if (v > y)
+            y = span(out, W, H, u, y, v, f->color_map[idx]);
+    }
+    span(out, W, H, u, y, H, f->sky);
+}
+
 /* Mode course accumulates each line's position column by column (qx += sx after every
  * sample), so the column-major walk keeps one accumulator per distance and advances all of
  * them after each column, including those an early exit skipped, reproducing the row-major
@@ -79,10 +110,13 @@ static void course_column(const retro_frame *f, float *qx, float *qy, int u)
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1)
 {
     for (int u = u0; u < u1; u++) {
-        if (f->mode == RETRO_MODE_EXACT)
-            exact_column(f, u);
-        else
-            course_column(f, qx, qy, u);
+        switch (f->mode) {
+        case RETRO_MODE_EXACT: exact_column(f, u); break;
+        case RETRO_MODE_COURSE: course_column(f, qx, qy, u); break;
+        case RETRO_MODE_TRUTH: variant_column(f, u, RETRO_MODE_TRUTH); break;
+        case RETRO_MODE_FIXED: variant_column(f, u, RETRO_MODE_FIXED); break;
+        default: variant_column(f, u, RETRO_MODE_LOD); break;
+        }
     }
 }
 

@@ -42,6 +42,28 @@ RETRO_HELPER int retro_course_row(float cw2, int ch2, int H, int64_t dh, int d)
     return (int)v;
 }
 
+/* Row v of a sample in mode truth: step 6 in binary64. */
+RETRO_HELPER int retro_truth_row(double kd, double half_h, int H, int64_t dh)
+{
+    double vf = kd * (double)dh + half_h;
+    if (vf >= (double)H)
+        return H;
+    if (vf >= 0.0)
+        return (int)vf;
+    return 0;
+}
+
+/* Row v of a sample in mode fixed: VF = K_d * dh + H/2 with RETRO_FX_PROJ fractional bits. */
+RETRO_HELPER int retro_fixed_row(int64_t kd, int64_t half_h, int H, int64_t dh)
+{
+    int64_t vf = kd * dh + half_h;
+    if (vf >= (int64_t)H << RETRO_FX_PROJ)
+        return H;
+    if (vf >= 0)
+        return (int)(vf >> RETRO_FX_PROJ);
+    return 0;
+}
+
 /* floor(q) mod S in [0, S). |q| < 2^31 holds for every valid frame (D <= 2^22). */
 RETRO_HELPER int retro_cell(float q, int S)
 {
@@ -101,6 +123,36 @@ RETRO_HELPER int retro_course_cell_fast(float q, float k, float inv_k)
 {
     float m = retro_float_mod_fast(q, k, inv_k);
     return m >= 0 ? (int)m : 0;
+}
+
+/* floor(v / 2^bits) mod S without shifting a negative value (implementation-defined in C). */
+RETRO_HELPER int retro_fixed_cell(int64_t v, int S)
+{
+    int64_t q = v >= 0 ? v >> RETRO_FX_POS : -((-(v + 1)) >> RETRO_FX_POS) - 1;
+    int64_t i = q % S;
+    return (int)(i < 0 ? i + S : i);
+}
+
+/* The map cell of sample (u, d), u 0-based, in modes exact/lod, truth and fixed. */
+RETRO_HELPER size_t retro_exact_sample(const retro_frame *f, int u, int d)
+{
+    float qx = f->x0 + (float)d * f->rx[u], qy = f->y0 + (float)d * f->ry[u];
+    return (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
+}
+
+RETRO_HELPER size_t retro_truth_sample(const retro_frame *f, int u, int d)
+{
+    double qx = f->x0_d + (double)d * f->rxd[u], qy = f->y0_d + (double)d * f->ryd[u];
+    int64_t i = (int64_t)floor(qx) % f->S, j = (int64_t)floor(qy) % f->S;
+    i += i < 0 ? f->S : 0;
+    j += j < 0 ? f->S : 0;
+    return (size_t)j * (size_t)f->S + (size_t)i;
+}
+
+RETRO_HELPER size_t retro_fixed_sample(const retro_frame *f, int u, int d)
+{
+    int64_t qx = f->x0_fx + (int64_t)d * f->rx_fx[u], qy = f->y0_fx + (int64_t)d * f->ry_fx[u];
+    return (size_t)retro_fixed_cell(qy, f->S) * (size_t)f->S + (size_t)retro_fixed_cell(qx, f->S);
 }
 
 /* The pixel (u, r), u and r 1-based, r from the bottom, as an index into out. */

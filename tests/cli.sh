@@ -46,12 +46,17 @@ expect_bad "unknown command" frobnicate
 expect_bad "unknown genmap style" genmap volcano -o "$tmp/v"
 expect_bad "course on a 1x1 map" render maps/test/flat-1 -m course -o "$tmp/out.png"
 
-for cmd in "" render kernels verify genmap; do
+for cmd in "" render kernels verify genmap accuracy; do
   "$retro" $cmd --help >/dev/null 2>&1 || { echo "FAIL: retro $cmd --help"; fails=$((fails + 1)); }
 done
 "$retro" render $map -s 64x48 -o "$tmp/ok.png" && [ -s "$tmp/ok.png" ] || { echo "FAIL: render to png"; fails=$((fails + 1)); }
 "$retro" render $map -s 64x48 -m course -k naive -o "$tmp/ok.ppm" && head -c 2 "$tmp/ok.ppm" | grep -q P6 ||
   { echo "FAIL: render to ppm"; fails=$((fails + 1)); }
 "$retro" kernels | awk '{print $1}' | grep -qx naive || { echo "FAIL: kernels lists naive first column"; fails=$((fails + 1)); }
+"$retro" accuracy --poses 1 -o "$tmp/acc.md" --chart "$tmp/acc.svg" 2>/dev/null &&
+  [ "$(grep -c '^| [a-z]' "$tmp/acc.md")" -ge 8 ] && grep -q '<svg' "$tmp/acc.svg" ||
+  { echo "FAIL: retro accuracy table and chart"; fails=$((fails + 1)); }
+expect_bad "unknown render mode" render $map -m approximate -o "$tmp/out.png"
+expect_bad "bad lod" render $map -m lod --lod -1 -o "$tmp/out.png"
 echo "cli: $fails failures"
 [ "$fails" -eq 0 ]

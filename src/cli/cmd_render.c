@@ -9,13 +9,15 @@
 
 static void help(void)
 {
-    printf("usage: retro render MAP [-k KERNEL] [-m exact|course] [-s WxH] [-d DISTANCE]\n"
+    printf("usage: retro render MAP [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
-           "                        [--threads N]\n"
+           "                        [--threads N] [--lod L]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "  -k KERNEL   kernel (default: the fastest this CPU runs for the mode; retro kernels)\n"
-           "  -m MODE     exact (default) or course (bit-compatible with the course)\n"
+           "  -m MODE     exact (default), course (bit-compatible with the course), or an accuracy\n"
+           "              variant: truth (binary64), fixed (integer inner loop), lod (docs/ACCURACY.md)\n"
+           "  --lod L     mode lod's step growth: step = max(1, floor(d * L)) (default 0.02)\n"
            "  -s WxH      screen size (default 640x480)\n"
            "  -d D        distance: samples at d = 1..D-1 (default 800)\n"
            "  -p X,Y      position (default: the map's centre)\n"
@@ -33,7 +35,7 @@ int cmd_render(int argc, char **argv)
     retro_mode mode = RETRO_MODE_EXACT;
     int W = 640, H = 480, have_pos = 0, have_z = 0;
     long D = 800, z = 0, angle = 0, threads = 0;
-    float x = 0, y = 0;
+    float x = 0, y = 0, lod = 0;
     uint32_t sky = 0x66a3ff00u;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v;
@@ -53,7 +55,7 @@ int cmd_render(int argc, char **argv)
             kname = v;
         else if (!strcmp(a, "-m")) {
             if (retro_mode_parse(v, &mode))
-                return cli_error("render", "unknown mode '%s' (exact or course)", v);
+                return cli_error("render", "unknown mode '%s' (exact, course, truth, fixed, lod)", v);
         } else if (!strcmp(a, "-s")) {
             if (cli_size(v, &W, &H) || W > RETRO_MAX_SCREEN || H > RETRO_MAX_SCREEN ||
                 (long)W * H > RETRO_MAX_PIXELS)
@@ -79,6 +81,9 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--isa")) {
             if (retro_cpu_limit(v))
                 return cli_error("render", "unknown ISA level '%s' (none, sse2, avx2, avx512)", v);
+        } else if (!strcmp(a, "--lod")) {
+            if (cli_float(v, &lod) || lod < 0 || lod > 100)
+                return cli_error("render", "bad lod '%s' (a number from 0 to 100)", v);
         } else if (!strcmp(a, "--threads")) {
             if (cli_int(v, 1, 64, &threads))
                 return cli_error("render", "bad thread count '%s' (1..64)", v);
@@ -125,6 +130,7 @@ int cmd_render(int argc, char **argv)
     retro_ctx rc;
     retro_ctx_init(&rc);
     rc.threads = (int)threads;
+    rc.lod = lod;
     retro_err e = retro_render(&rc, k, mode, &p, &c);
     int status = 0;
     if (e)

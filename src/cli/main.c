@@ -13,6 +13,7 @@ static const struct {
     {"kernels", cmd_kernels, "list the kernels, their modes and whether this CPU runs them"},
     {"verify", cmd_verify, "check every kernel pixel-identical to naive"},
     {"genmap", cmd_genmap, "generate a procedural or analytic map"},
+    {"accuracy", cmd_accuracy, "measure what each accuracy variant costs in time and error"},
 };
 
 static void usage(FILE *f)

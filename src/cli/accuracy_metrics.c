@@ -1,0 +1,134 @@
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "accuracy_metrics.h"
+
+double acc_rand(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+/* The highest terrain row of column u: rows count from the bottom, out is top to bottom. */
+static int silhouette(const uint32_t *img, int W, int H, int u, uint32_t sky)
+{
+    for (int top = 0; top < H; top++)
+        if (img[(size_t)top * (size_t)W + (size_t)u] != sky)
+            return H - top;
+    return 0;
+}
+
+void acc_compare(acc_stats *s, const uint32_t *truth, const uint32_t *img, int W, int H, uint32_t sky)
+{
+    size_t n = (size_t)W * (size_t)H, diff = 0;
+    for (size_t i = 0; i < n; i++) {
+        diff += truth[i] != img[i];
+        for (int sh = 8; sh <= 24; sh += 8) {
+            double e = (double)((truth[i] >> sh) & 255) - (double)((img[i] >> sh) & 255);
+            s->sq_err += e * e;
+        }
+    }
+    int cols = 0;
+    for (int u = 0; u < W; u++) {
+        int e = abs(silhouette(truth, W, H, u, sky) - silhouette(img, W, H, u, sky));
+        cols += e != 0;
+        s->sil_sum += e;
+        s->sil_max = e > s->sil_max ? e : s->sil_max;
+    }
+    s->frames += 1;
+    s->pixel_frac += (double)diff / (double)n;
+    s->col_frac += (double)cols / W;
+    s->columns += W;
+    s->bytes += 3.0 * (double)n;
+}
+
+void acc_summary(const acc_stats *s, acc_row *r)
+{
+    r->pixel_pct = 100 * s->pixel_frac / s->frames;
+    r->col_pct = 100 * s->col_frac / s->frames;
+    r->sil_mean = s->sil_sum / s->columns;
+    r->sil_max = s->sil_max;
+    double mse = s->sq_err / s->bytes;
+    r->psnr = mse > 0 ? 10 * log10(255.0 * 255.0 / mse) : INFINITY;
+}
+
+static int write_chart(const char *svg, const acc_row *rows, int n, char *err, size_t errlen)
+{
+    char dat[512], gp[512];
+    snprintf(dat, sizeof dat, "%s.dat", svg);
+    snprintf(gp, sizeof gp, "%s.gp", svg);
+    FILE *f = fopen(dat, "w"), *g = fopen(gp, "w");
+    if (!f || !g) {
+        if (f)
+            fclose(f);
+        if (g)
+            fclose(g);
+        snprintf(err, errlen, "cannot write %s", dat);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) /* error axis is logarithmic: truth (0) sits at its floor */
+        fprintf(f, "\"%s\" %.4f %.6f\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3);
+    fclose(f);
+    fprintf(g, "set terminal svg size 800,520 dynamic background '#ffffff'\nset output '%s'\n"
+               "set title 'What accuracy costs: time per frame against error (vs truth)'\n"
+               "set xlabel 'median ms/frame, fastest kernel, 640x480, D 800'\n"
+               "set ylabel 'pixels differing from truth (%%, log)'\nset logscale y\nset grid\n"
+               "set key off\nset offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
+               "plot '%s' using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4', "
+               "'' using 2:3:1 with labels offset 1,0.8 left\n", svg, dat);
+    fclose(g);
+    char cmd[1200];
+    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", gp);
+    if (system(cmd) != 0) {
+        snprintf(err, errlen, "gnuplot failed on %s (is gnuplot-nox installed?)", gp);
+        return -1;
+    }
+    return 0;
+}
+
+int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
+                     uint64_t seed, char *err, size_t errlen)
+{
+    mkdir("results", 0755);
+    if (write_chart(svg, rows, n, err, errlen))
+        return -1;
+    char tmp[600];
+    snprintf(tmp, sizeof tmp, "%s.tmp", md);
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot write", md);
+        return -1;
+    }
+    time_t t = time(NULL);
+    char date[32];
+    strftime(date, sizeof date, "%Y-%m-%d", gmtime(&t));
+    fprintf(f, "# What accuracy costs\n\nMeasured %s by `make accuracy`: %d seeded random poses (seed %llu) of the "
+               "default and course scenes, 640x480, D 800, each variant rendered by the fastest kernel for "
+               "its mode and compared with mode `truth` (definitions: docs/ACCURACY.md).\n\n",
+            date, poses, (unsigned long long)seed);
+    fprintf(f, "| variant | what | kernel | median ms/frame | speedup vs exact | pixels differ | "
+               "silhouette columns differ | mean silhouette error (rows) | max silhouette error | PSNR (dB) |\n"
+               "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int i = 0; i < n; i++) {
+        char psnr[32];
+        if (isinf(rows[i].psnr))
+            snprintf(psnr, sizeof psnr, "∞");
+        else
+            snprintf(psnr, sizeof psnr, "%.1f", rows[i].psnr);
+        fprintf(f, "| %s | %s | %s | %.3f | %.2fx | %.3f%% | %.2f%% | %.3f | %d | %s |\n", rows[i].label,
+                rows[i].what, rows[i].kernel, rows[i].ms, rows[i].speedup, rows[i].pixel_pct, rows[i].col_pct,
+                rows[i].sil_mean, rows[i].sil_max, psnr);
+    }
+    fprintf(f, "\n![time against error](accuracy-pareto.svg)\n");
+    if (fclose(f) || rename(tmp, md)) {
+        snprintf(err, errlen, "%s: cannot write", md);
+        return -1;
+    }
+    return 0;
+}

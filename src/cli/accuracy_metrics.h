@@ -1,0 +1,34 @@
+/* Error of a frame against mode truth (docs/ACCURACY.md, "Error figures") and the report. */
+#ifndef RETRO_ACCURACY_METRICS_H
+#define RETRO_ACCURACY_METRICS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    double frames;
+    double pixel_frac;   /* sum over frames of the fraction of differing pixels */
+    double col_frac;     /* sum over frames of the fraction of columns whose silhouette differs */
+    double sil_sum;      /* sum of |silhouette error| in rows over all columns of all frames */
+    double columns;
+    int sil_max;
+    double sq_err;       /* sum of squared byte errors over R, G, B */
+    double bytes;
+} acc_stats;
+
+typedef struct {
+    const char *label, *what, *kernel;
+    double ms, speedup;
+    double pixel_pct, col_pct, sil_mean, psnr;
+    int sil_max;
+} acc_row;
+
+/* A uniform double in [0, 1) from a splitmix64 state: the poses are seeded and portable. */
+double acc_rand(uint64_t *state);
+void acc_compare(acc_stats *s, const uint32_t *truth, const uint32_t *img, int W, int H, uint32_t sky);
+void acc_summary(const acc_stats *s, acc_row *row);
+/* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot). */
+int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
+                     uint64_t seed, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,182 @@
+/* retro accuracy: what each accuracy variant costs in time and gains in error, measured on
+ * seeded random poses of the default and course scenes against mode truth. Writes a Markdown
+ * table and a Pareto chart (time against error). Definitions: docs/ACCURACY.md. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "accuracy_metrics.h"
+#include "cli.h"
+#include "retro.h"
+#include "retro_maps.h"
+
+enum { W = 640, H = 480, D = 800, MAX_POSES = 4096 };
+/* A sky no map colour can equal (map colours have a zero low byte): terrain is told exactly. */
+#define SKY 0x000000ffu
+
+typedef struct {
+    const char *label;
+    retro_mode mode;
+    float lod;
+    int half; /* mode exact at half resolution, scaled up */
+    const char *what;
+    acc_stats stats;
+    double *ms;
+    int n;
+    retro_ctx ctx;
+} variant;
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+/* Renders v's frame at pose p into out (W x H), timing only the render itself. */
+static double render_variant(variant *v, const retro_map *m, const player_t *p, uint32_t *out,
+                             uint32_t *small)
+{
+    int w = v->half ? (W + 1) / 2 : W, h = v->half ? (H + 1) / 2 : H;
+    ctx_t c = {w, h, m->size, D, SKY, m->height, m->color, v->half ? small : out};
+    v->ctx.lod = v->lod;
+    double t0 = now_ms();
+    retro_render(&v->ctx, retro_kernel_best(v->mode), v->mode, p, &c);
+    double t = now_ms() - t0;
+    if (v->half)
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++)
+                out[y * W + x] = small[(y / 2) * w + x / 2];
+    return t;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static void help(void)
+{
+    printf("usage: retro accuracy [--poses N] [--seed S] [-o OUT.md] [--chart OUT.svg]\n\n"
+           "Renders N seeded random poses (default 20) of each default scene (maps/) and course\n"
+           "scene ($RETRO_SHARED/course) at 640x480, D 800, with every accuracy variant through\n"
+           "the fastest kernel for its mode, compares each frame with mode truth and writes a table\n"
+           "(default results/ACCURACY.md) and a Pareto chart (default results/accuracy-pareto.svg).\n");
+}
+
+int cmd_accuracy(int argc, char **argv)
+{
+    long poses = 20;
+    uint64_t seed = 1;
+    const char *out_md = "results/ACCURACY.md", *out_svg = "results/accuracy-pareto.svg";
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *val;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            help();
+            return 0;
+        }
+        if (!(val = cli_value(argc, argv, &i)))
+            return cli_error("accuracy", "option %s needs a value (retro accuracy --help)", a);
+        if (!strcmp(a, "--poses")) {
+            if (cli_int(val, 1, MAX_POSES, &poses))
+                return cli_error("accuracy", "bad pose count '%s' (1..%d)", val, MAX_POSES);
+        } else if (!strcmp(a, "--seed")) {
+            if (cli_u64(val, &seed))
+                return cli_error("accuracy", "bad seed '%s'", val);
+        } else if (!strcmp(a, "-o"))
+            out_md = val;
+        else if (!strcmp(a, "--chart"))
+            out_svg = val;
+        else
+            return cli_error("accuracy", "unknown option '%s' (retro accuracy --help)", a);
+    }
+
+    variant vars[] = {
+        {.label = "truth", .mode = RETRO_MODE_TRUTH, .lod = 0, .half = 0, .what = "binary64, exact floor and wrap"},
+        {.label = "exact", .mode = RETRO_MODE_EXACT, .lod = 0, .half = 0, .what = "binary32 (SEMANTICS.md)"},
+        {.label = "course", .mode = RETRO_MODE_COURSE, .lod = 0, .half = 0, .what = "the course's arithmetic"},
+        {.label = "fixed", .mode = RETRO_MODE_FIXED, .lod = 0, .half = 0, .what = "integer-only inner loop, 24+16 fraction bits"},
+        {.label = "lod 0.005", .mode = RETRO_MODE_LOD, .lod = 0.005f, .half = 0, .what = "step max(1, d/200)"},
+        {.label = "lod 0.02", .mode = RETRO_MODE_LOD, .lod = 0.02f, .half = 0, .what = "step max(1, d/50)"},
+        {.label = "lod 0.05", .mode = RETRO_MODE_LOD, .lod = 0.05f, .half = 0, .what = "step max(1, d/20)"},
+        {.label = "half", .mode = RETRO_MODE_EXACT, .lod = 0, .half = 1, .what = "exact at 320x240, scaled 2x"},
+    };
+    const int nv = (int)(sizeof vars / sizeof vars[0]);
+    const char *shared = getenv("RETRO_SHARED") ? getenv("RETRO_SHARED") : "../shared";
+    char scenes[6][512];
+    int ns = 0;
+    for (int i = 0; i < 3; i++)
+        snprintf(scenes[ns++], sizeof scenes[0], "maps/%s", (const char *[]){"alpine", "islands", "canyon"}[i]);
+    for (int i = 0; i < 3; i++)
+        snprintf(scenes[ns++], sizeof scenes[0], "%s/course/%s", shared, (const char *[]){"valley", "island", "pyramids"}[i]);
+
+    uint32_t *truth = malloc(sizeof(uint32_t) * W * H), *img = malloc(sizeof(uint32_t) * W * H);
+    uint32_t *small = malloc(sizeof(uint32_t) * W * H);
+    for (int k = 0; k < nv; k++) {
+        vars[k].ms = malloc(sizeof(double) * (size_t)poses * (size_t)ns);
+        retro_ctx_init(&vars[k].ctx);
+    }
+    int total = 0, status = 0;
+    char err[512];
+    uint64_t rng = seed;
+    for (int s = 0; s < ns && !status; s++) {
+        retro_map m;
+        if (retro_map_load(scenes[s], &m, err, sizeof err)) {
+            if (s < 3)
+                status = cli_error("accuracy", "%s (run make maps)", err);
+            else
+                fprintf(stderr, "accuracy: skipped %s: %s\n", scenes[s], err);
+            continue;
+        }
+        fprintf(stderr, "accuracy: %s, %ld poses...\n", scenes[s], poses);
+        for (int n = 0; n < poses; n++) {
+            player_t p = {0};
+            p.x = (float)(acc_rand(&rng) * m.size);
+            p.y = (float)(acc_rand(&rng) * m.size);
+            p.angle = (int)(acc_rand(&rng) * 360);
+            size_t at = (size_t)p.y * (size_t)m.size + (size_t)p.x;
+            p.height = m.height[at] + 20 + (int)(acc_rand(&rng) * 180);
+            for (int k = 0; k < nv; k++) {
+                render_variant(&vars[k], &m, &p, img, small); /* warm caches, then time */
+                vars[k].ms[vars[k].n++] = render_variant(&vars[k], &m, &p, img, small);
+                if (k == 0)
+                    memcpy(truth, img, sizeof(uint32_t) * W * H);
+                acc_compare(&vars[k].stats, truth, img, W, H, SKY);
+            }
+            total++;
+        }
+        retro_map_free(&m);
+    }
+    if (!status) {
+        double exact_ms = 0;
+        for (int k = 0; k < nv; k++) {
+            qsort(vars[k].ms, (size_t)vars[k].n, sizeof(double), cmp_double);
+            if (vars[k].mode == RETRO_MODE_EXACT && !vars[k].half)
+                exact_ms = vars[k].ms[vars[k].n / 2];
+        }
+        acc_row rows[16];
+        for (int k = 0; k < nv; k++) {
+            rows[k].label = vars[k].label;
+            rows[k].what = vars[k].what;
+            rows[k].kernel = retro_kernel_best(vars[k].mode)->name;
+            rows[k].ms = vars[k].ms[vars[k].n / 2];
+            rows[k].speedup = exact_ms / rows[k].ms;
+            acc_summary(&vars[k].stats, &rows[k]);
+        }
+        if (acc_write_report(out_md, out_svg, rows, nv, total, seed, err, sizeof err))
+            status = cli_error("accuracy", "%s", err);
+        else
+            printf("accuracy: %d poses; wrote %s and %s\n", total, out_md, out_svg);
+    }
+    for (int k = 0; k < nv; k++) {
+        free(vars[k].ms);
+        retro_ctx_free(&vars[k].ctx);
+    }
+    free(truth);
+    free(img);
+    free(small);
+    return status;
+}
