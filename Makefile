@@ -18,7 +18,7 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SA
 CXXFLAGS ?= $(OPT) -g
 ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
 
-PKGS_LIB  := spng hwloc
+PKGS_LIB  := spng hwloc inih
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)

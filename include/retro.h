@@ -77,6 +77,9 @@ typedef struct retro_frame {
     int64_t x0_fx, y0_fx, half_h_fx;
     const int64_t *rx_fx, *ry_fx; /* [W] */
     const int64_t *kd_fx;         /* [D] */
+    /* per-sample effects in force (RETRO_FX_FOG, RETRO_FX_BILINEAR of retro_scene.h) */
+    unsigned fx;
+    const uint16_t *fog;  /* [D] fog weight 0..256 at distance d */
     /* mode lod: the sample distances, increasing from 1 */
     const int *dist;
     int ndist;
@@ -100,6 +103,12 @@ typedef struct retro_ctx {
     int64_t *rx_fx, *ry_fx, *kd_fx; /* mode fixed */
     int *dist;                     /* mode lod, capacity cap_d */
     float lod;          /* mode lod's step growth (0: the default 0.02) */
+    const struct retro_effects *fx; /* effects to simulate (include/retro_scene.h), or NULL */
+    uint8_t *fx_height;  /* baked maps (morph, shade, water), capacity fx_cap cells */
+    uint32_t *fx_color;
+    size_t fx_cap;
+    void *fx_key;        /* the inputs the baked maps were made from */
+    uint16_t *fog;       /* fog weight per distance, capacity cap_d */
     int cap_w, cap_d;
     const uint8_t *hmax_map; /* map whose maximum is cached in hmax_value */
     int hmax_size;
@@ -153,6 +162,7 @@ typedef struct retro_kernel {
     unsigned flags;       /* RETRO_KF_* */
     const char *summary;  /* one line for `retro kernels` */
     retro_strip_fn strip; /* column-strip entry point, or NULL (naive, threaded kernels) */
+    unsigned fx;          /* per-sample effects it renders (RETRO_FX_FOG, RETRO_FX_BILINEAR) */
 } retro_kernel;
 
 extern const retro_kernel retro_kernels[];
@@ -161,6 +171,8 @@ extern const size_t retro_kernel_count;
 const retro_kernel *retro_kernel_find(const char *name);
 /* The fastest kernel this CPU runs for mode (the last capable row of the table). */
 const retro_kernel *retro_kernel_best(retro_mode mode);
+/* The same among kernels that render the per-sample effects of fx (NULL: none). */
+const retro_kernel *retro_kernel_best_fx(retro_mode mode, const struct retro_effects *fx);
 int retro_kernel_runs_here(const retro_kernel *k);
 int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode);
 

@@ -4,11 +4,13 @@
 set -eu
 retro=$1
 only=${2:-all}
-gen() { # NAME STYLE SIZE SEED
-  if [ ! -f "maps/$1.pgm" ] || [ "$retro" -nt "maps/$1.pgm" ]; then
-    mkdir -p "$(dirname "maps/$1")"
-    echo "  GEN     maps/$1 ($2, ${3}x$3, seed $4)"
-    "$retro" genmap "$2" --size "$3" --seed "$4" -o "maps/$1"
+gen() { # NAME STYLE SIZE SEED [GENMAP OPTIONS...]
+  name=$1 style=$2 size=$3 seed=$4
+  shift 4
+  if [ ! -f "maps/$name.pgm" ] || [ "$retro" -nt "maps/$name.pgm" ]; then
+    mkdir -p "$(dirname "maps/$name")"
+    echo "  GEN     maps/$name ($style, ${size}x$size, seed $seed${*:+, $*})"
+    "$retro" genmap "$style" --size "$size" --seed "$seed" "$@" -o "maps/$name"
   fi
 }
 gen test/flat-64 flat 64 0
@@ -24,3 +26,7 @@ gen test/alpine-200 alpine 200 7
 gen alpine alpine 1024 1
 gen islands islands 1024 1
 gen canyon canyon 1024 1
+# For the scenes (maps/*.scene): colours without baked light for [shade], and the tide's
+# second height keyframe for [morph].
+gen alpine-unlit alpine-unlit 1024 1
+gen islands-low islands 1024 1 --height-offset -24

@@ -29,7 +29,8 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 #include <stdlib.h>
 #include <string.h>
 HDR
-  for f in include/retro.h src/retro_internal.h src/kernels.h src/frame.c src/course_accum.c \
+  for f in include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/frame.c \
+           src/effects_bake.c src/course_accum.c \
            src/kernel_ybuffer.c src/submission/dispatch.c src/kernel_pthreads.c src/course.c; do
     printf '\n/* ---- %s ---- */\n' "$f"
     grep -v '^#include' "$f"

@@ -5,6 +5,7 @@
 
 #include "retro.h"
 #include "retro_internal.h"
+#include "retro_scene.h"
 
 void retro_ctx_init(retro_ctx *rc)
 {
@@ -32,6 +33,10 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->ry_fx);
     free(rc->kd_fx);
     free(rc->dist);
+    free(rc->fx_height);
+    free(rc->fx_color);
+    free(rc->fx_key);
+    free(rc->fog);
     free(rc->simd_cells);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
@@ -73,7 +78,7 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
             grow((void **)&rc->sy, n, sizeof(float)) || grow((void **)&rc->qx, n, sizeof(float)) ||
             grow((void **)&rc->qy, n, sizeof(float)) || grow((void **)&rc->vcap, n + 1, sizeof(int)) ||
             grow((void **)&rc->kdd, n, sizeof(double)) || grow((void **)&rc->kd_fx, n, sizeof(int64_t)) ||
-            grow((void **)&rc->dist, n + 1, sizeof(int)))
+            grow((void **)&rc->dist, n + 1, sizeof(int)) || grow((void **)&rc->fog, n, sizeof(uint16_t)))
             return RETRO_ENOMEM;
         rc->cap_d = d;
     }
@@ -159,8 +164,9 @@ static int64_t to_fixed(double v, int bits)
     return llround(v * (double)(1LL << bits));
 }
 
-static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
+static void setup_exact(retro_ctx *rc, retro_frame *f, int angle, const retro_effects *fx)
 {
+    unsigned flags = fx ? fx->flags : 0;
     double cs, sn;
     direction(angle, &cs, &sn);
     f->cs = (float)cs;
@@ -176,6 +182,10 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
     }
     f->half_w = 0.5f * (float)W;
     f->half_h = 0.5f * (float)f->H;
+    if (flags & RETRO_FX_HORIZON)
+        f->half_h = f->half_h + (float)fx->pitch;
+    if (flags & RETRO_FX_FOG)
+        retro_fog_table(fx, rc->fog, f->D);
     for (int d = 1; d < f->D; d++)
         rc->kd[d] = f->half_w / (float)d;
     if (f->mode != RETRO_MODE_LOD) {
@@ -183,7 +193,7 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle)
         return;
     }
     /* dist[1..ndist-1] are the sample distances; entry ndist closes vcap. */
-    double lambda = rc->lod > 0 ? rc->lod : RETRO_LOD_DEFAULT;
+    double lambda = (flags & RETRO_FX_LOD) ? fx->lod : rc->lod > 0 ? rc->lod : RETRO_LOD_DEFAULT;
     int n = 1;
     for (int64_t d = 1; d < f->D; n++) {
         rc->dist[n] = (int)d;
@@ -267,9 +277,23 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     if (e)
         return e;
 
-    if (rc->hmax_map != c->height_map || rc->hmax_size != S) {
-        rc->hmax_value = map_max(c->height_map, (size_t)S * (size_t)S);
-        rc->hmax_map = c->height_map;
+    const retro_effects *fx = rc->fx;
+    unsigned flags = fx ? fx->flags & RETRO_FX_ALL : 0;
+    if (flags && mode != RETRO_MODE_EXACT && mode != RETRO_MODE_LOD)
+        return RETRO_EINVAL; /* effects are defined on modes exact and lod */
+    if ((flags & RETRO_FX_MORPH) && !fx->morph_height)
+        return RETRO_EINVAL;
+    const uint8_t *hm = c->height_map;
+    const uint32_t *cm = c->color_map;
+    if (flags & (RETRO_FX_MORPH | RETRO_FX_SHADE | RETRO_FX_WATER)) {
+        if (retro_effects_bake(rc, fx, hm, cm, S))
+            return RETRO_ENOMEM;
+        hm = rc->fx_height;
+        cm = rc->fx_color;
+    }
+    if (rc->hmax_map != hm || rc->hmax_size != S) {
+        rc->hmax_value = map_max(hm, (size_t)S * (size_t)S);
+        rc->hmax_map = hm;
         rc->hmax_size = S;
     }
 
@@ -281,11 +305,14 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->S = S;
     f->D = D;
     f->sky = c->sky_color;
-    f->height_map = c->height_map;
-    f->color_map = c->color_map;
+    f->height_map = hm;
+    f->color_map = cm;
+    f->fx = flags & RETRO_FX_PER_SAMPLE;
+    f->fog = rc->fog;
     f->out = c->out;
     f->height = p->height;
-    f->hmax = rc->hmax_value;
+    /* A bilinear height exceeds the maximum by rounding at most: the bound takes one more. */
+    f->hmax = rc->hmax_value + ((flags & RETRO_FX_BILINEAR) ? 1 : 0);
     f->x0 = (float)wrap(p->x, S);
     f->y0 = (float)wrap(p->y, S);
     f->rx = rc->rx;
@@ -307,7 +334,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     case RETRO_MODE_COURSE: setup_course(rc, f, p); break;
     case RETRO_MODE_TRUTH: setup_truth(rc, f, p); cap_rows(rc, f->D, row_truth); break;
     case RETRO_MODE_FIXED: setup_fixed(rc, f, p); break;
-    default: setup_exact(rc, f, p->angle); break; /* exact and lod */
+    default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
     return RETRO_OK;
 }

@@ -31,7 +31,7 @@ static int chunk_columns(void)
 
 void retro_kernel_omp(const retro_frame *f, retro_ctx *rc)
 {
-    retro_strip_fn strip = retro_best_strip(f->mode);
+    retro_strip_fn strip = retro_best_strip(f->mode, f->fx);
     int threads = retro_pool_threads(rc);
     retro_pool *pool = retro_pool_get(rc, threads, f->D);
     if (!pool) { /* out of memory for scratch: render single-threaded, still exact */
@@ -48,8 +48,11 @@ void retro_kernel_omp(const retro_frame *f, retro_ctx *rc)
         float *qx = retro_pool_qx(pool, t), *qy = retro_pool_qy(pool, t);
         retro_course_start(f, qx, qy);
         int at = 0;
-        /* Dynamic chunks are handed out in increasing order, so a thread only moves forward. */
-#pragma omp for schedule(dynamic, 1) nowait
+        /* monotonic: each thread gets its chunks in increasing order, so it only moves forward.
+         * Plain dynamic is nonmonotonic since OpenMP 5.0, and libomp (clang) hands chunks out
+         * in any order (static stealing): a thread could then render an earlier chunk with
+         * accumulators already past it. */
+#pragma omp for schedule(monotonic: dynamic, 1) nowait
         for (int c = 0; c < chunks; c++) {
             int u0 = c * chunk, u1 = u0 + chunk < f->W ? u0 + chunk : f->W;
             retro_course_advance(f, qx, qy, at, u0);

@@ -11,6 +11,7 @@
  */
 #include "kernels.h"
 #include "retro_internal.h"
+#include "retro_scene.h"
 
 /* Paints rows y+1..v of column u (0-based) of a W-wide, H-high frame; returns the new y-buffer.
  * Frame fields are passed as values: a pixel store may alias an int field of the frame, so
@@ -76,6 +77,65 @@ static inline void variant_column(const retro_frame *f, int u, retro_mode mode)
     span(out, W, H, u, y, H, f->sky);
 }
 
+/* Modes exact and lod with per-sample effects. Each effect is a compile-time constant in each
+ * instantiation below, so the code of an effect a frame does not call for is not in the loop
+ * that renders it, and the plain path (exact_column) carries no effect code at all. */
+static inline __attribute__((always_inline)) void effect_column(const retro_frame *f, int u, const int lod,
+                                                                const int fog, const int bilinear)
+{
+    const int W = f->W, H = f->H, n_end = lod ? f->ndist : f->D;
+    const float rx = f->rx[u], ry = f->ry[u], x0 = f->x0, y0 = f->y0, half_h = f->half_h;
+    const int64_t height = f->height;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
+    int y = 0;
+    for (int n = 1; n < n_end && y < vcap[n]; n++) {
+        const int d = lod ? f->dist[n] : n;
+        const float qx = x0 + (float)d * rx, qy = y0 + (float)d * ry;
+        uint32_t color;
+        int v;
+        if (bilinear) {
+            retro_bilerp b;
+            float hf = retro_bilinear_height(f, qx, qy, &b);
+            v = retro_exact_row_f(f->kd[d], half_h, H, retro_bilinear_dh(hf, height));
+            if (v <= y)
+                continue;
+            color = retro_bilinear_color(f, &b);
+        } else {
+            size_t idx = (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
+            v = retro_exact_row(f->kd[d], half_h, H, f->height_map[idx] - height);
+            if (v <= y)
+                continue;
+            color = f->color_map[idx];
+        }
+        if (fog)
+            color = retro_fog(color, f->sky, f->fog[d]);
+        y = span(out, W, H, u, y, v, color);
+    }
+    span(out, W, H, u, y, H, f->sky);
+}
+
+typedef void (*effect_column_fn)(const retro_frame *f, int u);
+#define EFFECT_COLUMN(name, lod, fog, bilinear)                                                    \
+    static void name(const retro_frame *f, int u) { effect_column(f, u, lod, fog, bilinear); }
+EFFECT_COLUMN(fx_fog, 0, 1, 0)
+EFFECT_COLUMN(fx_bilinear, 0, 0, 1)
+EFFECT_COLUMN(fx_fog_bilinear, 0, 1, 1)
+EFFECT_COLUMN(fx_lod_fog, 1, 1, 0)
+EFFECT_COLUMN(fx_lod_bilinear, 1, 0, 1)
+EFFECT_COLUMN(fx_lod_fog_bilinear, 1, 1, 1)
+
+/* The instantiation for a frame's per-sample effects (none: NULL, the plain paths). */
+static effect_column_fn effect_column_for(const retro_frame *f)
+{
+    static const effect_column_fn table[2][4] = {
+        {NULL, fx_fog, fx_bilinear, fx_fog_bilinear},
+        {NULL, fx_lod_fog, fx_lod_bilinear, fx_lod_fog_bilinear},
+    };
+    int which = ((f->fx & RETRO_FX_FOG) ? 1 : 0) | ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0);
+    return table[f->mode == RETRO_MODE_LOD][which];
+}
+
 /* Mode course accumulates each line's position column by column (qx += sx after every
  * sample), so the column-major walk keeps one accumulator per distance and advances all of
  * them after each column, including those an early exit skipped, reproducing the row-major
@@ -109,6 +169,12 @@ static void course_column(const retro_frame *f, float *qx, float *qy, int u)
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1)
 {
+    effect_column_fn fx = f->fx ? effect_column_for(f) : NULL;
+    if (fx) {
+        for (int u = u0; u < u1; u++)
+            fx(f, u);
+        return;
+    }
     for (int u = u0; u < u1; u++) {
         switch (f->mode) {
         case RETRO_MODE_EXACT: exact_column(f, u); break;

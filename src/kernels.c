@@ -3,17 +3,20 @@
 #include <string.h>
 
 #include "kernels.h"
+#include "retro_scene.h"
 
 /* Every mode, the accuracy variants of docs/ACCURACY.md included. */
 #define ALL ((1u << RETRO_MODE_COUNT) - 1)
+/* The per-sample effects a kernel implements in its inner loop (docs/EFFECTS.md). */
+#define FX RETRO_FX_PER_SAMPLE
 const retro_kernel retro_kernels[] = {
-    {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL},
+    {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL, FX},
     {"ybuffer", retro_kernel_ybuffer, 0, ALL, RETRO_KF_WRITE_ONCE,
-     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer},
+     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer, FX},
     {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
-     "column chunks on POSIX threads started per frame: the submission's engine", NULL},
+     "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
-     "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL},
+     "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX},
 };
 
 const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
@@ -36,21 +39,41 @@ int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode)
     return (unsigned)mode < RETRO_MODE_COUNT && (k->modes & RETRO_MODE_BIT(mode)) != 0;
 }
 
-const retro_kernel *retro_kernel_best(retro_mode mode)
+/* The per-sample effects fx asks of a kernel. */
+static unsigned per_sample(const retro_effects *fx)
+{
+    return fx ? fx->flags & RETRO_FX_PER_SAMPLE : 0;
+}
+
+/* An effect set with lod renders in mode lod. */
+static retro_mode effective_mode(retro_mode mode, const retro_effects *fx)
+{
+    return fx && (fx->flags & RETRO_FX_LOD) && mode == RETRO_MODE_EXACT ? RETRO_MODE_LOD : mode;
+}
+
+const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *fx)
 {
     const retro_kernel *best = NULL;
-    for (size_t i = 0; i < retro_kernel_count; i++)
-        if (retro_kernel_runs_here(&retro_kernels[i]) && retro_kernel_has_mode(&retro_kernels[i], mode))
-            best = &retro_kernels[i];
+    mode = effective_mode(mode, fx);
+    for (size_t i = 0; i < retro_kernel_count; i++) {
+        const retro_kernel *k = &retro_kernels[i];
+        if (retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode) && !(per_sample(fx) & ~k->fx))
+            best = k;
+    }
     return best;
 }
 
-retro_strip_fn retro_best_strip(retro_mode mode)
+const retro_kernel *retro_kernel_best(retro_mode mode)
+{
+    return retro_kernel_best_fx(mode, NULL);
+}
+
+retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx)
 {
     retro_strip_fn best = NULL;
     for (size_t i = 0; i < retro_kernel_count; i++) {
         const retro_kernel *k = &retro_kernels[i];
-        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode))
+        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode) && !(fx & ~k->fx))
             best = k->strip;
     }
     return best;
@@ -61,7 +84,8 @@ retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode, co
 {
     if (!k)
         return RETRO_EINVAL;
-    if (!retro_kernel_has_mode(k, mode) || !retro_kernel_runs_here(k))
+    mode = effective_mode(mode, rc->fx);
+    if (!retro_kernel_has_mode(k, mode) || !retro_kernel_runs_here(k) || (per_sample(rc->fx) & ~k->fx))
         return RETRO_EUNSUPPORTED;
     retro_err e = retro_frame_setup(rc, mode, p, c);
     if (e)

@@ -12,8 +12,9 @@ void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, in
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
-/* The strip of the fastest single-thread kernel this CPU runs for mode. */
-retro_strip_fn retro_best_strip(retro_mode mode);
+/* The strip of the fastest single-thread kernel this CPU runs for mode that implements the
+ * per-sample effects fx. */
+retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx);
 
 void retro_kernel_naive(const retro_frame *f, retro_ctx *rc);
 void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc);

@@ -19,6 +19,7 @@ enum { ALPINE, ISLANDS, CANYON };
 
 typedef struct gen {
     int style, size;
+    int unlit;       /* STYLE-unlit: albedo only, for renderers that light the map themselves */
     int max_period;  /* lattices finer than this only alias: at most half the map's pixels */
     uint32_t seed[12];  /* one per independent use, so no two fields correlate */
     float *h;        /* raw field, then heights in renderer units (0..255) */
@@ -403,7 +404,7 @@ static void colorize(gen *g, retro_map *m, float level) {
             uint32_t hj = hash3((uint32_t)x, (uint32_t)y, g->seed[4]) >> 8;
             float jit = 0.95f + (float)hj * (0.1f / 16777216.0f);  /* per-cell grain, +-5% */
             float ndl = (-gx * sx - gy * sy + sz) / sqrtf(gx * gx + gy * gy + 1.0f);
-            float light = jit * (0.45f + 0.75f * maxf(ndl, 0.0f));
+            float light = g->unlit ? jit : jit * (0.45f + 0.75f * maxf(ndl, 0.0f));
             m->color[i] = to8(c.r * light) << 24 | to8(c.g * light) << 16 | to8(c.b * light) << 8;
         }
     }
@@ -443,9 +444,12 @@ int retro_terrain_generate(const char *style, uint64_t seed, retro_map *m) {
     gen g;
     memset(&g, 0, sizeof g);
     if (!style || !m || m->size < 1) return -1;
-    if (!strcmp(style, "alpine")) g.style = ALPINE;
-    else if (!strcmp(style, "islands")) g.style = ISLANDS;
-    else if (!strcmp(style, "canyon")) g.style = CANYON;
+    size_t len = strlen(style);
+    g.unlit = len > 6 && !strcmp(style + len - 6, "-unlit");
+    if (g.unlit) len -= 6;
+    if (len == 6 && !strncmp(style, "alpine", len)) g.style = ALPINE;
+    else if (len == 7 && !strncmp(style, "islands", len)) g.style = ISLANDS;
+    else if (len == 6 && !strncmp(style, "canyon", len)) g.style = CANYON;
     else return -1;
     const int S = g.size = m->size;
     if ((size_t)S > SIZE_MAX / sizeof(float) / (size_t)S) return -1;

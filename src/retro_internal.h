@@ -15,8 +15,26 @@
 
 /* The course's float_mod. */
 float retro_float_mod(float f, float k);
+struct retro_effects;
+/* Bakes morph, shade and water into rc->fx_height/fx_color unless they are current; -1 when
+ * out of memory. */
+int retro_effects_bake(retro_ctx *rc, const struct retro_effects *fx, const uint8_t *h0,
+                       const uint32_t *c0, int S);
+/* Fog weights F_d (0..256) for d = 1..D-1. */
+void retro_fog_table(const struct retro_effects *fx, uint16_t *fog, int D);
 /* Releases the thread pool of parallel kernels, if any. */
 void retro_pool_free(retro_ctx *rc);
+
+/* Row v in 0..H of a sample in mode exact from a height difference already in float. */
+RETRO_HELPER int retro_exact_row_f(float kd, float half_h, int H, float dh)
+{
+    float vf = kd * dh + half_h;
+    if (vf >= (float)H)
+        return H;
+    if (vf >= 0.0f)
+        return (int)vf;
+    return 0;
+}
 
 /* Row v in 0..H of a sample in mode exact (SEMANTICS.md step 6). */
 RETRO_HELPER int retro_exact_row(float kd, float half_h, int H, int64_t dh)
@@ -153,6 +171,59 @@ RETRO_HELPER size_t retro_fixed_sample(const retro_frame *f, int u, int d)
 {
     int64_t qx = f->x0_fx + (int64_t)d * f->rx_fx[u], qy = f->y0_fx + (int64_t)d * f->ry_fx[u];
     return (size_t)retro_fixed_cell(qy, f->S) * (size_t)f->S + (size_t)retro_fixed_cell(qx, f->S);
+}
+
+/* Fog (docs/EFFECTS.md): each channel moves toward the sky's by F/256. */
+RETRO_HELPER uint32_t retro_fog(uint32_t c, uint32_t sky, int F)
+{
+    uint32_t out = 0;
+    for (int sh = 8; sh <= 24; sh += 8) {
+        uint32_t a = (c >> sh) & 255, s = (sky >> sh) & 255;
+        out |= ((a * (uint32_t)(256 - F) + s * (uint32_t)F + 128) >> 8) << sh;
+    }
+    return out;
+}
+
+/* Bilinear filtering (docs/EFFECTS.md): the four cells and weights of a sample point. */
+typedef struct {
+    size_t c[4]; /* (i0,j0), (i1,j0), (i0,j1), (i1,j1) */
+    float tx, ty;
+} retro_bilerp;
+
+RETRO_HELPER float retro_bilinear_height(const retro_frame *f, float qx, float qy, retro_bilerp *b)
+{
+    float px = qx - 0.5f, py = qy - 0.5f, fx = floorf(px), fy = floorf(py);
+    int S = f->S, i0 = retro_cell(px, S), j0 = retro_cell(py, S);
+    int i1 = i0 + 1 == S ? 0 : i0 + 1, j1 = j0 + 1 == S ? 0 : j0 + 1;
+    b->tx = px - fx;
+    b->ty = py - fy;
+    b->c[0] = (size_t)j0 * (size_t)S + (size_t)i0;
+    b->c[1] = (size_t)j0 * (size_t)S + (size_t)i1;
+    b->c[2] = (size_t)j1 * (size_t)S + (size_t)i0;
+    b->c[3] = (size_t)j1 * (size_t)S + (size_t)i1;
+    const uint8_t *h = f->height_map;
+    return ((float)h[b->c[0]] * (1.0f - b->tx) + (float)h[b->c[1]] * b->tx) * (1.0f - b->ty) +
+           ((float)h[b->c[2]] * (1.0f - b->tx) + (float)h[b->c[3]] * b->tx) * b->ty;
+}
+
+RETRO_HELPER uint32_t retro_bilinear_color(const retro_frame *f, const retro_bilerp *b)
+{
+    const uint32_t *c = f->color_map;
+    uint32_t out = 0;
+    for (int sh = 8; sh <= 24; sh += 8) {
+        float v = ((float)((c[b->c[0]] >> sh) & 255) * (1.0f - b->tx) + (float)((c[b->c[1]] >> sh) & 255) * b->tx) *
+                      (1.0f - b->ty) +
+                  ((float)((c[b->c[2]] >> sh) & 255) * (1.0f - b->tx) + (float)((c[b->c[3]] >> sh) & 255) * b->tx) *
+                      b->ty;
+        out |= (uint32_t)(int)(v + 0.5f) << sh;
+    }
+    return out;
+}
+
+/* The bilinear height's difference to the camera: exact in double, rounded once. */
+RETRO_HELPER float retro_bilinear_dh(float hf, int64_t height)
+{
+    return (float)((double)hf - (double)height);
 }
 
 /* The pixel (u, r), u and r 1-based, r from the bottom, as an index into out. */

@@ -1,4 +1,5 @@
 /* Strict argument parsing: "12abc", "", out-of-range and non-finite values are errors. */
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -34,7 +35,8 @@ int cli_u64(const char *s, uint64_t *out)
 {
     char *end;
     errno = 0;
-    if (!*s || *s == '-')
+    /* strtoull skips blanks and negates after a minus sign: " -5" would be 2^64 - 5. */
+    if (!*s || strchr(s, '-'))
         return -1;
     unsigned long long v = strtoull(s, &end, 10);
     if (*end || errno)
@@ -91,6 +93,10 @@ int cli_rgb(const char *s, uint32_t *rgb)
     char *end;
     if (strlen(p) != 6)
         return -1;
+    /* Six hex digits only: strtoul would also take blanks, a sign or 0x ("-00001" is ffffff). */
+    for (int i = 0; i < 6; i++)
+        if (!isxdigit((unsigned char)p[i]))
+            return -1;
     unsigned long v = strtoul(p, &end, 16);
     if (*end)
         return -1;

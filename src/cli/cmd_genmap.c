@@ -8,20 +8,24 @@
 
 static void help(void)
 {
-    printf("usage: retro genmap STYLE [--size S] [--seed N] [--png] -o PREFIX\n\n"
+    printf("usage: retro genmap STYLE [--size S] [--seed N] [--height-offset N] [--png] -o PREFIX\n\n"
            "Writes PREFIX.pgm (heights) and PREFIX.ppm (colours; PREFIX.png with --png).\n"
            "  STYLE      one of:");
     for (const char *const *s = retro_mapgen_styles; *s; s++)
         printf(" %s", *s);
-    printf("\n  --size S   map size, any integer 1..%d (default 1024)\n"
-           "  --seed N   seed (default 1); the same seed gives the same bytes\n",
+    printf("\n             and alpine-unlit, islands-unlit, canyon-unlit: the same heights with\n"
+           "             colours free of baked sunlight, for a scene's [shade] effect\n"
+           "  --size S   map size, any integer 1..%d (default 1024)\n"
+           "  --seed N   seed (default 1); the same seed gives the same bytes\n"
+           "  --height-offset N  add N (-255..255) to every height, clamped to 0..255; the\n"
+           "             colours stay: a second height keyframe for a scene's [morph]\n",
            RETRO_MAX_MAP);
 }
 
 int cmd_genmap(int argc, char **argv)
 {
     const char *style = NULL, *out = NULL;
-    long size = 1024;
+    long size = 1024, offset = 0;
     uint64_t seed = 1;
     int png = 0;
     for (int i = 1; i < argc; i++) {
@@ -48,6 +52,9 @@ int cmd_genmap(int argc, char **argv)
         } else if (!strcmp(a, "--seed")) {
             if (cli_u64(v, &seed))
                 return cli_error("genmap", "bad seed '%s' (a non-negative integer)", v);
+        } else if (!strcmp(a, "--height-offset")) {
+            if (cli_int(v, -255, 255, &offset))
+                return cli_error("genmap", "bad height offset '%s' (-255..255)", v);
         } else if (!strcmp(a, "-o"))
             out = v;
         else
@@ -61,6 +68,10 @@ int cmd_genmap(int argc, char **argv)
     retro_map m;
     if (retro_mapgen(style, seed, (int)size, &m, err, sizeof err))
         return cli_error("genmap", "%s", err);
+    for (size_t i = 0; offset && i < (size_t)m.size * (size_t)m.size; i++) {
+        long h = m.height[i] + offset;
+        m.height[i] = (uint8_t)(h < 0 ? 0 : h > 255 ? 255 : h);
+    }
     int r = retro_map_save(out, &m, png, err, sizeof err);
     retro_map_free(&m);
     return r ? cli_error("genmap", "%s", err) : 0;

@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "retro.h"
 #include "retro_maps.h"
+#include "retro_scene.h"
 #include "verify_cases.h"
 #include "verify_variants.h"
 
@@ -172,6 +173,68 @@ static int run_case(verify_run *v, const verify_case *vc, verify_variant *vars, 
     return 0;
 }
 
+/* One effect case: naive with the effects against every variant that renders them. */
+static int run_fx_case(verify_run *v, const verify_fx_case *vc, verify_variant *vars, int nvars)
+{
+    char err[512];
+    const retro_map *m = get_map(v, vc->map, err, sizeof err);
+    if (!m) {
+        fprintf(stderr, "retro verify: %s (run make maps)\n", err);
+        return CLI_EBADINPUT;
+    }
+    size_t cells = (size_t)m->size * (size_t)m->size;
+    uint8_t *h1 = malloc(cells);
+    enum { W = 320, H = 240 };
+    uint32_t *ref = malloc(sizeof(uint32_t) * W * H), *out = malloc(sizeof(uint32_t) * W * H);
+    if (!h1 || !ref || !out) {
+        free(h1);
+        free(ref);
+        free(out);
+        fprintf(stderr, "retro verify: out of memory\n");
+        return CLI_EBADINPUT;
+    }
+    for (size_t i = 0; i < cells; i++)
+        h1[i] = (uint8_t)(255 - m->height[i]);
+    retro_effects fx;
+    retro_effects_defaults(&fx);
+    fx.flags = vc->fx;
+    fx.fog_exp = vc->fog_exp;
+    fx.pitch = vc->pitch;
+    fx.morph_height = h1;
+    fx.morph_t = 0.37f;
+    verify_case pose = {vc->name, vc->map, NAN, NAN, vc->angle, 60, 1, W, H, 800, 1};
+    player_t p;
+    player_for(&pose, m, &p);
+    ctx_t c = {W, H, m->size, 800, 0x66a3ff00u, m->height, m->color, ref};
+    retro_ctx rc;
+    retro_ctx_init(&rc);
+    rc.fx = &fx;
+    retro_err e = retro_render(&rc, retro_kernel_find("naive"), RETRO_MODE_EXACT, &p, &c);
+    retro_ctx_free(&rc);
+    printf("%-22s %-6s", vc->name, "exact");
+    if (e) {
+        printf(" | naive failed: %s\n", retro_strerror(e));
+        v->differ++;
+    } else {
+        c.out = out;
+        for (int k = 0; k < nvars; k++) {
+            vars[k].ctx.fx = &fx;
+            if (!retro_kernel_has_mode(vars[k].kernel, (fx.flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT) ||
+                ((fx.flags & RETRO_FX_PER_SAMPLE) & ~vars[k].kernel->fx))
+                printf(" | %-*s", VERIFY_CELL_WIDTH, "-");
+            else
+                check_variant(v, &vars[k], RETRO_MODE_EXACT, &p, &c, ref, vc->name);
+            vars[k].ctx.fx = NULL;
+        }
+        printf("\n");
+    }
+    fflush(stdout);
+    free(h1);
+    free(ref);
+    free(out);
+    return 0;
+}
+
 static void help(void)
 {
     printf("usage: retro verify [--quick] [-k KERNEL] [--out DIR]\n\n"
@@ -220,6 +283,9 @@ int cmd_verify(int argc, char **argv)
     for (int i = 0; i < verify_case_count && !status; i++)
         if (!v.quick || verify_cases[i].quick)
             status = run_case(&v, &verify_cases[i], vars, nvars);
+    for (int i = 0; i < verify_fx_case_count && !status; i++)
+        if (!v.quick || verify_fx_cases[i].quick)
+            status = run_fx_case(&v, &verify_fx_cases[i], vars, nvars);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     for (int i = 0; i < v.nmaps; i++)
         if (v.maps[i].state > 0)

@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <math.h>
 
+#include "retro_scene.h"
 #include "verify_cases.h"
 
 #define VIEW NAN, NAN
@@ -70,3 +71,22 @@ const verify_case verify_cases[] = {
 };
 
 const int verify_case_count = (int)(sizeof verify_cases / sizeof verify_cases[0]);
+
+/* Each effect alone, then the combinations the default scenes use and a few more. */
+const verify_fx_case verify_fx_cases[] = {
+    {"fx-fog-linear", "islands", 30, RETRO_FX_FOG, 0, 0, 1},
+    {"fx-fog-exp", "islands", 30, RETRO_FX_FOG, 1, 0, 0},
+    {"fx-shade", "alpine", 0, RETRO_FX_SHADE, 0, 0, 1},
+    {"fx-water", "islands", 200, RETRO_FX_WATER, 0, 0, 1},
+    {"fx-bilinear", "canyon", 45, RETRO_FX_BILINEAR, 0, 0, 1},
+    {"fx-lod", "alpine", 100, RETRO_FX_LOD, 0, 0, 0},
+    {"fx-horizon-up", "canyon", 0, RETRO_FX_HORIZON, 0, 60, 0},
+    {"fx-horizon-down", "canyon", 0, RETRO_FX_HORIZON, 0, -80, 0},
+    {"fx-morph", "islands", 300, RETRO_FX_MORPH, 0, 0, 0},
+    {"fx-water-fog", "islands", 10, RETRO_FX_WATER | RETRO_FX_FOG, 0, 0, 1},
+    {"fx-morph-water", "islands", 120, RETRO_FX_MORPH | RETRO_FX_WATER, 0, 0, 1},
+    {"fx-lod-fog-bilinear", "alpine", 250, RETRO_FX_LOD | RETRO_FX_FOG | RETRO_FX_BILINEAR, 0, 0, 1},
+    {"fx-all", "alpine", 333, RETRO_FX_ALL, 1, 25, 1},
+};
+
+const int verify_fx_case_count = (int)(sizeof verify_fx_cases / sizeof verify_fx_cases[0]);

@@ -18,4 +18,19 @@ typedef struct verify_case {
 extern const verify_case verify_cases[];
 extern const int verify_case_count;
 
+/* Effect cases (docs/EFFECTS.md): mode exact at the map's default view turned by angle, with
+ * the effects' default parameters; morph blends toward the inverted height map. */
+typedef struct verify_fx_case {
+    const char *name;
+    const char *map;
+    int angle;
+    unsigned fx;       /* RETRO_FX_* */
+    int fog_exp;
+    int pitch;
+    int quick;
+} verify_fx_case;
+
+extern const verify_fx_case verify_fx_cases[];
+extern const int verify_fx_case_count;
+
 #endif

@@ -1,0 +1,88 @@
+/* Scenes and effects: a scene file names a map, a camera (or a fly-through path), a screen and
+ * the effects it calls for; only those are simulated (docs/EFFECTS.md defines each one). */
+#ifndef RETRO_SCENE_H
+#define RETRO_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "render.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum {
+    RETRO_FX_FOG = 1u << 0,      /* blend toward the sky with distance (per sample) */
+    RETRO_FX_SHADE = 1u << 1,    /* Lambert lighting baked into the colour map */
+    RETRO_FX_WATER = 1u << 2,    /* a water plane baked into both maps */
+    RETRO_FX_BILINEAR = 1u << 3, /* bilinear height and colour (per sample) */
+    RETRO_FX_LOD = 1u << 4,      /* distance step growing with distance (mode lod) */
+    RETRO_FX_HORIZON = 1u << 5,  /* pitch as a horizon offset (a frame constant) */
+    RETRO_FX_MORPH = 1u << 6,    /* blend between two height keyframes (baked per time t) */
+    RETRO_FX_ALL = (1u << 7) - 1
+};
+/* Effects that need code in a kernel's inner loop; the others change only frame constants or
+ * the maps the frame reads, so every kernel renders them. */
+#define RETRO_FX_PER_SAMPLE (RETRO_FX_FOG | RETRO_FX_BILINEAR)
+
+typedef struct retro_effects {
+    unsigned flags;            /* RETRO_FX_* the scene calls for */
+    /* fog: factor f(d) = clamp((d - start) / (end - start), 0, 1), or 1 - exp(-density * d) */
+    int fog_exp;
+    float fog_start, fog_end, fog_density;
+    /* shade: light = ambient + diffuse * max(0, n . sun) with sun a direction (normalised) */
+    float sun[3];
+    float ambient, diffuse;
+    /* water: a plane at level; opacity alpha0 at the surface plus alpha_per_unit per unit of
+     * depth, clamped to 1 */
+    int water_level;
+    uint32_t water_color;      /* R<<24 | G<<16 | B<<8 */
+    float water_alpha0, water_alpha_per_unit;
+    /* lod: step = max(1, floor(d * lod)) */
+    float lod;
+    /* horizon: rows the horizon moves up (positive pitch looks down) */
+    int pitch;
+    /* morph: heights h0 + (h1 - h0) * t between the map's heights and morph_height */
+    const uint8_t *morph_height; /* S*S, the second keyframe */
+    float morph_t;             /* 0..1 */
+} retro_effects;
+
+/* Sets every parameter to its documented default, flags to 0. */
+void retro_effects_defaults(retro_effects *fx);
+
+#define RETRO_SCENE_MAX_KEYS 64
+
+typedef struct retro_keyframe {
+    float t;                   /* position along the path, 0..1 */
+    float x, y;
+    int height, angle;
+    float morph_t;             /* morph time at this key (if morph is on) */
+} retro_keyframe;
+
+typedef struct retro_scene {
+    char map[1024];            /* map prefix, resolved relative to the scene file's folder */
+    char morph_map[1024];      /* second height keyframe (prefix) for morph, or "" */
+    uint32_t sky;
+    float x, y;                /* camera */
+    int height, angle;
+    int W, H, D;               /* screen and distance */
+    int frames;                /* fly-through length in frames (0: no path) */
+    retro_keyframe keys[RETRO_SCENE_MAX_KEYS];
+    int nkeys;
+    retro_effects fx;
+} retro_scene;
+
+/* Parses an INI scene file (inih). On error returns -1 with err as "FILE:LINE: [section] key:
+ * problem". Unset values keep the defaults of retro_scene_defaults(). */
+int retro_scene_load(const char *path, retro_scene *s, char *err, size_t errlen);
+void retro_scene_defaults(retro_scene *s);
+/* The camera at frame i of the fly-through (linear between keyframes; angles the short way
+ * round); without a path, the scene's camera. Also sets *morph_t when the path has one. */
+void retro_scene_pose(const retro_scene *s, int frame, player_t *p, float *morph_t);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

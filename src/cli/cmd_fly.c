@@ -1,0 +1,147 @@
+/* retro fly: a scene's fly-through path, one numbered image per frame. */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+#include "scene_args.h"
+
+#define MAX_FRAMES 100000
+
+static void help(void)
+{
+    printf("usage: retro fly SCENE [-o PATTERN] [--frames N] [-k KERNEL] [-m MODE] [-s WxH]\n"
+           "                 [-d DISTANCE] [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB]\n"
+           "                 [--isa LEVEL] [--threads N] [--lod L]\n\n"
+           "Renders the fly-through [path] of SCENE (a .scene file, README, Scenes), one image per\n"
+           "frame, with a progress line per frame on stderr. Without a path it renders the scene's\n"
+           "camera once.\n"
+           "  -o PATTERN  output files, .ppm or .png, with one %%d, %%Nd or %%0Nd for the frame\n"
+           "              number from 0 (default results/fly/NAME-%%03d.png)\n"
+           "  --frames N  resample the path to N frames (default: the scene's [path] frames)\n"
+           "The other options are retro render's and override the scene's values in every frame.\n");
+}
+
+/* An output pattern split around its one frame-number conversion. */
+typedef struct pattern {
+    char pre[1024];
+    const char *post;
+    int width, zero;
+} pattern;
+
+static int parse_pattern(const char *s, pattern *pt)
+{
+    const char *pc = strchr(s, '%'), *q;
+    if (!pc || (size_t)(pc - s) >= sizeof pt->pre)
+        return -1;
+    q = pc + 1;
+    pt->zero = *q == '0';
+    q += pt->zero;
+    pt->width = 0;
+    while (*q >= '0' && *q <= '9' && pt->width < 100)
+        pt->width = pt->width * 10 + (*q++ - '0');
+    if (*q != 'd' || strchr(q + 1, '%'))
+        return -1;
+    memcpy(pt->pre, s, (size_t)(pc - s));
+    pt->pre[pc - s] = 0;
+    pt->post = q + 1;
+    return 0;
+}
+
+static int frame_path(const pattern *pt, int i, char *out, size_t n)
+{
+    int len = snprintf(out, n, pt->zero ? "%s%0*d%s" : "%s%*d%s", pt->pre, pt->width, i, pt->post);
+    return len < 0 || (size_t)len >= n ? -1 : 0;
+}
+
+/* results/fly/NAME-%03d.png, NAME the scene file's name without .scene. */
+static int default_pattern(const char *scene, char *out, size_t n)
+{
+    const char *base = strrchr(scene, '/');
+    base = base ? base + 1 : scene;
+    int len = snprintf(out, n, "results/fly/%.*s-%%03d.png", (int)(strlen(base) - 6), base);
+    return len < 0 || (size_t)len >= n ? -1 : 0;
+}
+
+static int make_dirs(void)
+{
+    if ((mkdir("results", 0777) && errno != EEXIST) || (mkdir("results/fly", 0777) && errno != EEXIST))
+        return cli_error("fly", "cannot create results/fly: %s", strerror(errno));
+    return 0;
+}
+
+static int fly(const render_opts *o, const pattern *pt, long frames, int default_dirs)
+{
+    render_job j;
+    if (job_open("fly", o, &j))
+        return CLI_EBADINPUT;
+    retro_scene *s = &j.scene;
+    int n = frames ? (int)frames : s->nkeys ? s->frames : 1, status = 0;
+    if (s->nkeys)
+        s->frames = n;
+    if (default_dirs)
+        status = make_dirs();
+    for (int i = 0; i < n && !status; i++) {
+        char path[4096];
+        player_t p;
+        if (frame_path(pt, i, path, sizeof path)) {
+            status = cli_error("fly", "output path for frame %d is too long", i);
+            break;
+        }
+        job_pose(&j, o, s->nkeys ? i : -1, &p);
+        status = job_write("fly", &j, &p, path);
+        if (!status)
+            fprintf(stderr, "retro fly: %d/%d %s (x %.1f, y %.1f, height %d, angle %d)\n", i + 1,
+                    n, path, (double)p.x, (double)p.y, p.height, p.angle);
+    }
+    job_close(&j);
+    return status;
+}
+
+int cmd_fly(int argc, char **argv)
+{
+    const char *out = NULL;
+    long frames = 0;
+    render_opts o;
+    render_opts_init(&o);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            help();
+            return 0;
+        }
+        if (a[0] != '-') {
+            if (o.map)
+                return cli_error("fly", "more than one SCENE: '%s' and '%s'", o.map, a);
+            o.map = a;
+            continue;
+        }
+        if (!(v = cli_value(argc, argv, &i)))
+            return cli_error("fly", "option %s needs a value (retro fly --help)", a);
+        int r = render_opt("fly", &o, a, v);
+        if (r == CLI_EBADINPUT)
+            return r;
+        if (r)
+            continue;
+        if (!strcmp(a, "-o"))
+            out = v;
+        else if (!strcmp(a, "--frames")) {
+            if (cli_int(v, 1, MAX_FRAMES, &frames))
+                return cli_error("fly", "bad frame count '%s' (1..%d)", v, MAX_FRAMES);
+        } else
+            return cli_error("fly", "unknown option '%s' (retro fly --help)", a);
+    }
+    if (!o.map)
+        return cli_error("fly", "no SCENE given (retro fly --help)");
+    if (!is_scene_file(o.map))
+        return cli_error("fly", "'%s' is not a scene file (NAME.scene)", o.map);
+    char def[2048];
+    if (!out && default_pattern(o.map, def, sizeof def))
+        return cli_error("fly", "scene path too long: %s", o.map);
+    pattern pt;
+    if (parse_pattern(out ? out : def, &pt))
+        return cli_error("fly", "bad output pattern '%s' (one %%d, %%Nd or %%0Nd, e.g. out-%%03d.png)",
+                         out ? out : def);
+    return fly(&o, &pt, frames, !out);
+}

@@ -1,0 +1,147 @@
+/* A render job: a plain MAP or a scene file, the command line overriding the scene's values. */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "scene_args.h"
+
+/* The morph keyframe: only its heights are blended, so only its .pgm is read. */
+static int load_morph(const char *cmd, render_job *j)
+{
+    char path[sizeof j->scene.morph_map + 8], err[1400];
+    int w, h;
+    snprintf(path, sizeof path, "%s.pgm", j->scene.morph_map);
+    if (retro_pgm_read(path, &j->morph, &w, &h, err, sizeof err))
+        return cli_error(cmd, "%s", err);
+    if (w != j->map.size || h != j->map.size)
+        return cli_error(cmd, "%s is %dx%d but the map %s is %dx%d", path, w, h, j->scene.map,
+                         j->map.size, j->map.size);
+    j->scene.fx.morph_height = j->morph;
+    return 0;
+}
+
+static int open_maps(const char *cmd, const char *prefix, render_job *j)
+{
+    char err[1400];
+    if (retro_map_load(prefix, &j->map, err, sizeof err))
+        return cli_error(cmd, "%s", err);
+    if (j->mode == RETRO_MODE_COURSE && j->map.size < 2)
+        return cli_error(cmd, "mode course needs a map of size 2 or more");
+    if ((j->scene.fx.flags & RETRO_FX_MORPH) && load_morph(cmd, j))
+        return CLI_EBADINPUT;
+    retro_default_view(&j->map, &j->view);
+    return 0;
+}
+
+static int pick_kernel(const char *cmd, const render_opts *o, render_job *j)
+{
+    retro_effects *fx = &j->scene.fx;
+    /* A scene's lod effect is mode lod unless the command line asks for another mode. */
+    j->mode = o->have_mode ? o->mode : (fx->flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT;
+    if (fx->flags && j->mode != RETRO_MODE_EXACT && j->mode != RETRO_MODE_LOD)
+        return cli_error(cmd, "%s: effects need mode exact or lod, not %s", o->map,
+                         retro_mode_name(j->mode));
+    j->k = o->kernel ? retro_kernel_find(o->kernel) : retro_kernel_best(j->mode);
+    if (!j->k)
+        return cli_error(cmd, "unknown kernel '%s' (retro kernels lists them)", o->kernel);
+    if (!retro_kernel_has_mode(j->k, j->mode))
+        return cli_error(cmd, "kernel '%s' does not support mode %s", j->k->name,
+                         retro_mode_name(j->mode));
+    if (!retro_kernel_runs_here(j->k))
+        return cli_error(cmd, "kernel '%s' needs an ISA this CPU (or --isa) lacks", j->k->name);
+    return 0;
+}
+
+static int open_job(const char *cmd, const render_opts *o, render_job *j)
+{
+    char err[1400];
+    const char *prefix = o->map;
+    j->is_scene = is_scene_file(o->map);
+    if (!j->is_scene)
+        retro_scene_defaults(&j->scene);
+    else if (retro_scene_load(o->map, &j->scene, err, sizeof err))
+        return cli_error(cmd, "%s", err);
+    else
+        prefix = j->scene.map;
+    retro_scene *s = &j->scene;
+    if (o->have_lod) /* --lod 0 means the default, as for a plain map */
+        s->fx.lod = o->lod > 0 ? o->lod : RETRO_LOD_DEFAULT;
+    if (pick_kernel(cmd, o, j) || open_maps(cmd, prefix, j))
+        return CLI_EBADINPUT;
+
+    int W = o->have_size ? o->W : s->W, H = o->have_size ? o->H : s->H;
+    long D = o->have_d ? o->D : s->D;
+    j->out = malloc((size_t)W * (size_t)H * sizeof *j->out);
+    if (!j->out)
+        return cli_error(cmd, "out of memory for a %dx%d frame", W, H);
+    ctx_t c = {W, H, j->map.size, (int)D, o->have_sky ? o->sky : s->sky, j->map.height,
+               j->map.color, j->out};
+    j->c = c;
+    j->rc.threads = (int)o->threads;
+    j->rc.lod = o->have_lod ? o->lod : (s->fx.flags & RETRO_FX_LOD) ? s->fx.lod : 0.0f;
+    /* A plain map renders exactly as before scenes existed: no effects block at all. */
+    j->rc.fx = j->is_scene ? &s->fx : NULL;
+    return 0;
+}
+
+int job_open(const char *cmd, const render_opts *o, render_job *j)
+{
+    memset(j, 0, sizeof *j);
+    retro_ctx_init(&j->rc);
+    if (open_job(cmd, o, j)) {
+        job_close(j);
+        return CLI_EBADINPUT;
+    }
+    return 0;
+}
+
+void job_pose(render_job *j, const render_opts *o, int frame, player_t *p)
+{
+    const retro_scene *s = &j->scene;
+    if (frame < 0 && s->nkeys && isnan(s->x) && isnan(s->y))
+        frame = 0;
+    float morph_t;
+    if (frame < 0) {
+        retro_scene still = *s;
+        still.nkeys = 0;
+        retro_scene_pose(&still, 0, p, &morph_t);
+    } else
+        retro_scene_pose(s, frame, p, &morph_t);
+    if (isnan(p->x))
+        p->x = j->view.x;
+    if (isnan(p->y))
+        p->y = j->view.y;
+    if (p->height == INT_MIN)
+        p->height = j->view.height;
+    if (o->have_pos) {
+        p->x = o->x;
+        p->y = o->y;
+    }
+    if (o->have_z)
+        p->height = (int)o->z;
+    if (o->have_angle)
+        p->angle = (int)o->angle;
+    j->scene.fx.morph_t = morph_t;
+}
+
+int job_write(const char *cmd, render_job *j, const player_t *p, const char *path)
+{
+    char err[1400];
+    retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+    if (e)
+        return cli_error(cmd, "%s", retro_strerror(e));
+    if (retro_image_write(path, j->out, j->c.scr_width, j->c.scr_height, err, sizeof err))
+        return cli_error(cmd, "%s", err);
+    return 0;
+}
+
+void job_close(render_job *j)
+{
+    retro_ctx_free(&j->rc);
+    free(j->out);
+    free(j->morph);
+    retro_map_free(&j->map);
+}

@@ -1,0 +1,143 @@
+/* Baked effects (docs/EFFECTS.md): morph, shade and water rewrite the maps once per change of
+ * their inputs, into maps owned by the render context, so the frame reads ready-made cells and
+ * a kernel's inner loop never pays for them. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "retro_internal.h"
+#include "retro_scene.h"
+
+/* Everything a bake depends on; equal keys mean the baked maps are still valid. */
+typedef struct {
+    const uint8_t *h0, *h1;
+    const uint32_t *c0;
+    int S, T;
+    unsigned flags;
+    float sun[3], ambient, diffuse;
+    int level;
+    uint32_t water;
+    float alpha0, alpha_per_unit;
+} bake_key;
+
+static void morph(const uint8_t *h0, const uint8_t *h1, int T, uint8_t *out, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        out[i] = (uint8_t)((h0[i] * (256 - T) + h1[i] * T + 128) >> 8);
+}
+
+static uint32_t scale(uint32_t c, float light)
+{
+    uint32_t out = 0;
+    for (int sh = 8; sh <= 24; sh += 8) {
+        int v = (int)((float)((c >> sh) & 255) * light + 0.5f);
+        out |= (uint32_t)(v > 255 ? 255 : v) << sh;
+    }
+    return out;
+}
+
+static void shade(const retro_effects *fx, const uint8_t *h, const uint32_t *c, uint32_t *out, int S)
+{
+    for (int j = 0; j < S; j++) {
+        const uint8_t *up = h + (size_t)((j + S - 1) % S) * (size_t)S;
+        const uint8_t *row = h + (size_t)j * (size_t)S, *down = h + (size_t)((j + 1) % S) * (size_t)S;
+        for (int i = 0; i < S; i++) {
+            int l = (i + S - 1) % S, r = (i + 1) % S;
+            float gx = (float)(row[r] - row[l]) * 0.5f, gy = (float)(down[i] - up[i]) * 0.5f;
+            float len = sqrtf(gx * gx + gy * gy + 1.0f);
+            float dot = ((-gx) * fx->sun[0] + (-gy) * fx->sun[1] + fx->sun[2]) / len;
+            float light = fx->ambient + fx->diffuse * (dot > 0.0f ? dot : 0.0f);
+            size_t at = (size_t)j * (size_t)S + (size_t)i;
+            out[at] = scale(c[at], light);
+        }
+    }
+}
+
+static void water(const retro_effects *fx, uint8_t *h, uint32_t *c, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (h[i] >= fx->water_level)
+            continue;
+        float a = fx->water_alpha0 + fx->water_alpha_per_unit * (float)(fx->water_level - h[i]);
+        a = a < 1.0f ? a : 1.0f;
+        uint32_t out = 0;
+        for (int sh = 8; sh <= 24; sh += 8) {
+            float w = (float)((fx->water_color >> sh) & 255) * a; /* premultiplied */
+            int v = (int)(w + (float)((c[i] >> sh) & 255) * (1.0f - a) + 0.5f);
+            out |= (uint32_t)(v > 255 ? 255 : v < 0 ? 0 : v) << sh;
+        }
+        c[i] = out;
+        h[i] = (uint8_t)fx->water_level;
+    }
+}
+
+int retro_effects_bake(retro_ctx *rc, const retro_effects *fx, const uint8_t *h0, const uint32_t *c0, int S)
+{
+    bake_key key;
+    memset(&key, 0, sizeof key);
+    key.h0 = h0;
+    key.c0 = c0;
+    key.S = S;
+    key.flags = fx->flags & (RETRO_FX_MORPH | RETRO_FX_SHADE | RETRO_FX_WATER);
+    if (key.flags & RETRO_FX_MORPH) {
+        key.h1 = fx->morph_height;
+        float t = fx->morph_t < 0 ? 0 : fx->morph_t > 1 ? 1 : fx->morph_t;
+        key.T = (int)(t * 256.0f + 0.5f);
+    }
+    if (key.flags & RETRO_FX_SHADE) {
+        memcpy(key.sun, fx->sun, sizeof key.sun);
+        key.ambient = fx->ambient;
+        key.diffuse = fx->diffuse;
+    }
+    if (key.flags & RETRO_FX_WATER) {
+        key.level = fx->water_level;
+        key.water = fx->water_color;
+        key.alpha0 = fx->water_alpha0;
+        key.alpha_per_unit = fx->water_alpha_per_unit;
+    }
+    if (rc->fx_key && !memcmp(rc->fx_key, &key, sizeof key))
+        return 0;
+    size_t n = (size_t)S * (size_t)S;
+    if (n > rc->fx_cap) {
+        uint8_t *h = realloc(rc->fx_height, n);
+        if (h)
+            rc->fx_height = h;
+        uint32_t *c = realloc(rc->fx_color, n * sizeof *c);
+        if (c)
+            rc->fx_color = c;
+        if (!h || !c)
+            return -1;
+        rc->fx_cap = n;
+    }
+    if (!rc->fx_key && !(rc->fx_key = malloc(sizeof key)))
+        return -1;
+    if (key.flags & RETRO_FX_MORPH)
+        morph(h0, key.h1, key.T, rc->fx_height, n);
+    else
+        memcpy(rc->fx_height, h0, n);
+    if (key.flags & RETRO_FX_SHADE)
+        shade(fx, rc->fx_height, c0, rc->fx_color, S);
+    else
+        memcpy(rc->fx_color, c0, n * sizeof *c0);
+    if (key.flags & RETRO_FX_WATER)
+        water(fx, rc->fx_height, rc->fx_color, n);
+    memcpy(rc->fx_key, &key, sizeof key);
+    /* Same pointers, new contents: caches keyed by map pointer must rebuild. */
+    retro_ctx_map_changed(rc);
+    return 0;
+}
+
+void retro_fog_table(const retro_effects *fx, uint16_t *fog, int D)
+{
+    for (int d = 1; d < D; d++) {
+        float f;
+        if (fx->fog_exp)
+            f = 1.0f - expf(-fx->fog_density * (float)d);
+        else if (fx->fog_end > fx->fog_start)
+            f = ((float)d - fx->fog_start) / (fx->fog_end - fx->fog_start);
+        else
+            f = (float)d >= fx->fog_start ? 1.0f : 0.0f;
+        f = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
+        fog[d] = (uint16_t)(int)(f * 256.0f + 0.5f);
+    }
+}
