@@ -15,18 +15,23 @@ struct retro_pool {
     int have_topo;
     int can_bind;          /* set_thisthread_cpubind is supported here */
     int cores;
+    unsigned long serial;  /* unique per pool in this process, never 0 */
     int cap_threads, cap_d;
     float *qx[RETRO_MAX_THREADS], *qy[RETRO_MAX_THREADS];
     char binding[160];
 };
 
-/* Which core this thread is bound to, so a frame costs no system call once threads are bound. */
+/* Which core this thread is bound to, so a frame costs no system call once threads are bound.
+ * The pool is identified by a serial number, not its address: a freed pool's address can
+ * come back for a new one whose threads are not bound yet. */
 static _Thread_local int bound_core = -1;
-static _Thread_local const retro_pool *bound_pool;
+static _Thread_local unsigned long bound_serial;
+static _Atomic unsigned long pool_serials;
 
 static void pool_init(retro_pool *p)
 {
     p->cores = 1;
+    p->serial = ++pool_serials;
     if (hwloc_topology_init(&p->topo) == 0 && hwloc_topology_load(p->topo) == 0) {
         p->have_topo = 1;
         int n = hwloc_get_nbobjs_by_type(p->topo, HWLOC_OBJ_CORE);
@@ -74,7 +79,7 @@ void retro_pool_bind(retro_pool *p, int t)
     if (!p->can_bind)
         return;
     int core = t % p->cores;
-    if (bound_pool == p && bound_core == core)
+    if (bound_serial == p->serial && bound_core == core)
         return;
     hwloc_obj_t obj = hwloc_get_obj_by_type(p->topo, HWLOC_OBJ_CORE, (unsigned)core);
     if (!obj)
@@ -83,7 +88,7 @@ void retro_pool_bind(retro_pool *p, int t)
     hwloc_bitmap_singlify(set);
     if (hwloc_set_cpubind(p->topo, set, HWLOC_CPUBIND_THREAD) == 0) {
         bound_core = core;
-        bound_pool = p;
+        bound_serial = p->serial;
     }
     hwloc_bitmap_free(set);
 }

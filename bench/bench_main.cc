@@ -1,0 +1,161 @@
+// retro-bench: registers one google-benchmark case per planned (kernel, threads, scene, mode,
+// screen, distance), times retro_render() on it, and writes BENCH.md and the charts script.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bench_report.h"
+#include "cases.h"
+#include "options.h"
+#include "pin.h"
+#include "progress_reporter.h"
+#include "run_context.h"
+
+// The case being timed keeps one context and one frame across all its runs (warm-up,
+// iteration-count probing, repetitions), so nothing is allocated per frame; moving to the
+// next case releases them, so a hundred cases never hold a hundred frames at once.
+static struct {
+    const BenchCase *owner = nullptr;
+    retro_ctx rc;
+    std::vector<uint32_t> out;
+    retro_err first;             // the result of the case's first, untimed frame
+} live;
+
+// The bench thread runs on cores 0 .. n-1 for a case at n threads: a threaded kernel's
+// workers inherit that set (the pthreads kernel) or are bound inside it by the kernel (omp
+// binds thread t to core t). It is re-bound only when n changes, because the omp kernel
+// remembers per thread where it bound it and would not notice being moved.
+static int bound_cores = 0;
+
+static void bind_for(int threads)
+{
+    if (threads == bound_cores)
+        return;
+    char note[160];
+    pin_thread_to_cores(0, threads, note, sizeof note);
+    bound_cores = threads;
+}
+
+static void run_case(benchmark::State &st, const BenchCase *c)
+{
+    if (!retro_kernel_runs_here(c->kernel)) {
+        st.SkipWithError("this CPU (or RETRO_ISA) lacks the instruction set the kernel needs");
+        return;
+    }
+    const bench_scene *s = c->scene;
+    player_t p = s->pose;
+    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color,
+                   nullptr};
+    if (live.owner != c) {
+        retro_ctx_free(&live.rc);
+        retro_ctx_init(&live.rc);
+        live.rc.threads = c->threads;
+        live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
+        live.owner = c;
+        bind_for(c->threads);
+        // Once per case, untimed: it validates the input and grows the context (and a
+        // threaded kernel's pool), so that no timed frame allocates.
+        frame.out = live.out.data();
+        live.first = retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+    }
+    frame.out = live.out.data();
+    if (live.first) {
+        st.SkipWithError(retro_strerror(live.first));
+        return;
+    }
+    for (auto _ : st) {
+        retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+        benchmark::ClobberMemory();
+    }
+    using benchmark::Counter;
+    // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
+    // same clock (CPU or real) as the case's own time.
+    const auto ms_flags = Counter::kIsIterationInvariantRate | Counter::kInvert;
+    st.counters["ms/frame"] = Counter(1e-3, static_cast<Counter::Flags>(ms_flags));
+    st.counters["Mpixel/s"] =
+        Counter(c->W * static_cast<double>(c->H) / 1e6, Counter::kIsIterationInvariantRate);
+    // Nominal: the W x (D-1) samples of the reference; kernels that stop early take fewer.
+    st.counters["samples/s"] = Counter(c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 0),
+                                       Counter::kIsIterationInvariantRate);
+}
+
+static int load_scenes(bench_scene *scenes, const Options &o, BenchPlan *plan)
+{
+    const char *shared = std::getenv("RETRO_SHARED");
+    int n = o.scene.empty()
+                ? scenes_load_default(scenes, SCENES_MAX, shared ? shared : "../shared")
+                : (scenes_load_one(&scenes[0], o.scene.c_str()) ? 0 : 1);
+    for (int i = 0; i < n; i++) {
+        plan->scenes.push_back(&scenes[i]);
+        if (!std::strcmp(scenes[i].name, "alpine"))
+            plan->sweep_scene = &scenes[i];
+    }
+    if (!plan->sweep_scene && n)
+        plan->sweep_scene = &scenes[0];
+    return n;
+}
+
+int main(int argc, char **argv)
+{
+    bool quick = false;
+    for (int i = 1; i < argc; i++) {
+        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+            options_usage();
+            return 0;
+        }
+        quick |= !std::strcmp(argv[i], "--quick");
+    }
+    RunContext ctx;
+    std::vector<char *> args = options_benchmark_args(argc, argv, quick, &ctx);
+    int n = static_cast<int>(args.size()) - 1;
+    benchmark::Initialize(&n, args.data());
+    Options opt;
+    BenchPlan plan;
+    if (!options_parse(n, args.data(), &opt, &plan))
+        return 2;
+
+    context_gather(&ctx);
+    char note[160];
+    bool pinned = pin_thread_to_cores(0, 1, note, sizeof note) == 0;
+    if (!pinned)
+        std::fprintf(stderr, "note: %s; timing unpinned\n", note);
+    ctx.binding = pinned ? std::string("bench thread on ") + note + " (hwloc)" : note;
+    bound_cores = 1;
+
+    static bench_scene scenes[SCENES_MAX];
+    int nscenes = load_scenes(scenes, opt, &plan);
+    if (nscenes == 0) {
+        std::fprintf(stderr, "retro-bench: no scene could be loaded (make maps)\n");
+        return 1;
+    }
+    plan.cores = ctx.cores;
+    plan_cases(&plan);
+    for (const auto &c : plan.cases) {
+        auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
+        b->Unit(benchmark::kMillisecond);
+        if (c->kernel->flags & RETRO_KF_THREADED)
+            b->UseRealTime(); // CPU time is this thread's alone and misses the workers
+    }
+
+    context_publish(ctx);
+    retro_ctx_init(&live.rc);
+    ProgressReporter progress(&plan);
+    size_t ran = benchmark::RunSpecifiedBenchmarks(&progress);
+    retro_ctx_free(&live.rc);
+    benchmark::Shutdown();
+    int status = ran ? 0 : 1;
+    if (progress.cases_done() > 0) { // none with --benchmark_list_tests
+        std::fprintf(stderr, "%d cases in %.0f s\n", progress.cases_done(), progress.seconds());
+        if (!opt.report_dir.empty() && !write_bench_md(opt.report_dir + "/BENCH.md", plan, ctx,
+                                                       progress.seconds(), progress.cases_done()))
+            status = 1;
+        if (!opt.charts.empty() && !write_charts_gp(opt.charts, plan, ctx))
+            status = 1;
+    }
+    scenes_free(scenes, nscenes);
+    return status;
+}

@@ -1,0 +1,191 @@
+// BENCH.md: the run's context, then one markdown table per question a reader asks.
+#include "bench_report.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+static const double NaN = std::nan("");
+
+// Four significant digits whatever the magnitude, so columns stay comparable by eye.
+static std::string ms(double v)
+{
+    if (std::isnan(v))
+        return "–";
+    char b[32];
+    std::snprintf(b, sizeof b, v < 10 ? "%.3f" : v < 100 ? "%.2f" : "%.1f", v);
+    return b;
+}
+
+static std::string times(double v)
+{
+    if (std::isnan(v))
+        return "–";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2f×", v);
+    return b;
+}
+
+static std::string percent(double v)
+{
+    if (std::isnan(v))
+        return "–";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f%%", 100 * v);
+    return b;
+}
+
+// The worst spread over the repetitions of a row's scenes: how far to trust its medians.
+static double max_cv(const BenchPlan &plan, const ReportRow &row, retro_mode mode)
+{
+    double worst = NaN;
+    for (const bench_scene *s : plan.scenes) {
+        const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, plan.W, plan.H, plan.D);
+        if (c && c->ran && c->error.empty() && !std::isnan(c->cv))
+            worst = std::isnan(worst) ? c->cv : std::max(worst, c->cv);
+    }
+    return worst;
+}
+
+static std::string kernel_cell(const ReportRow &r)
+{
+    return std::string("`") + r.kernel->name + "` | " + std::to_string(r.threads);
+}
+
+static void matrix_table(std::ostream &o, const BenchPlan &plan, retro_mode mode)
+{
+    std::vector<ReportRow> rows = report_rows(plan, GROUP_MATRIX, mode);
+    if (rows.empty())
+        return;
+    o << "\n## Mode " << retro_mode_name(mode) << ", " << plan.W << "×" << plan.H << ", D "
+      << plan.D << ": median ms/frame\n\n| kernel | threads |";
+    for (const bench_scene *s : plan.scenes)
+        o << " " << s->name << " |";
+    o << " geomean | vs naive | vs ybuffer | max cv |\n|---|--:|";
+    for (size_t i = 0; i < plan.scenes.size() + 4; i++)
+        o << "--:|";
+    o << "\n";
+    for (const ReportRow &r : rows) {
+        o << "| " << kernel_cell(r) << " |";
+        for (const bench_scene *s : plan.scenes)
+            o << " " << ms(report_ms(plan, r, s, mode, plan.W, plan.H, plan.D)) << " |";
+        o << " " << ms(report_geomean(plan, r, mode)) << " | "
+          << times(report_speedup(plan, r, mode, "naive")) << " | "
+          << times(report_speedup(plan, r, mode, "ybuffer")) << " | "
+          << percent(max_cv(plan, r, mode)) << " |\n";
+    }
+}
+
+// A sweep table: one column per point, points given as (W, H, D) with their titles.
+static void sweep_table(std::ostream &o, const BenchPlan &plan, unsigned group,
+                        const std::string &title, const std::vector<std::string> &heads,
+                        const std::vector<std::array<int, 3>> &points)
+{
+    std::vector<ReportRow> rows = report_rows(plan, group, RETRO_MODE_EXACT);
+    if (rows.empty())
+        return;
+    o << "\n## " << title << "\n\n| kernel | threads |";
+    for (const std::string &h : heads)
+        o << " " << h << " |";
+    o << "\n|---|--:|";
+    for (size_t i = 0; i < heads.size(); i++)
+        o << "--:|";
+    o << "\n";
+    for (const ReportRow &r : rows) {
+        o << "| " << kernel_cell(r) << " |";
+        for (const auto &p : points)
+            o << " " << ms(report_ms(plan, r, plan.sweep_scene, RETRO_MODE_EXACT, p[0], p[1], p[2]))
+              << " |";
+        o << "\n";
+    }
+}
+
+static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx,
+                   double seconds, int cases_run)
+{
+    o << "# retro benchmark\n\n| | |\n|---|---|\n"
+      << "| CPU | " << ctx.cpu_model << "; " << ctx.cores << " cores, " << ctx.pus
+      << " hardware threads; retro ISA level " << ctx.isa << " |\n"
+      << "| binding | single-threaded kernels: " << ctx.binding
+      << "; a threaded kernel at n threads: bench thread on cores 0 to n-1, the kernel's own "
+         "placement within them (" << ctx.kernel_binding << ") |\n"
+      << "| C compiler | " << ctx.cc << " |\n"
+      << "| C flags | `" << ctx.cflags << "` (plus per-file ISA flags) |\n"
+      << "| harness | " << ctx.cxx << ", google-benchmark; " << ctx.repetitions
+      << " repetitions of at least " << ctx.min_time << " s each, after one untimed frame "
+      << "and " << ctx.warmup << " s of warm-up per case; CPU time for single-threaded "
+         "kernels, wall time for threaded ones; medians |\n";
+    if (!ctx.filter.empty()) {
+        std::string f; // a regex's | would end the table cell
+        for (char ch : ctx.filter)
+            f += ch == '|' ? std::string("\\|") : std::string(1, ch);
+        o << "| filter | `" << f << "` (a partial run) |\n";
+    }
+    o << "| date | " << ctx.date << "; load average " << ctx.load << " at the start |\n"
+      << "| commit | " << ctx.commit << " |\n"
+      << "| run | " << cases_run << " cases in " << static_cast<int>(std::lround(seconds))
+      << " s |\n\nTimes are the median milliseconds per frame over the repetitions (lower is "
+         "better). Speedups divide geometric means over the scenes (higher is better). "
+         "Max cv is the largest coefficient of variation of a row's repetitions: where it is "
+         "high, other work shared the machine. Scenes:";
+    for (const bench_scene *s : plan.scenes)
+        o << " " << s->name << (std::string(s->origin) == "course" ? " (course test pose)" : "")
+          << (s == plan.scenes.back() ? "." : ",");
+    o << " Generated maps are seen from their default view.\n";
+}
+
+bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunContext &ctx,
+                    double seconds, int cases_run)
+{
+    std::ostringstream o;
+    header(o, plan, ctx, seconds, cases_run);
+    for (retro_mode mode : plan.modes)
+        matrix_table(o, plan, mode);
+    if (plan.sweep_scene) {
+        std::vector<std::string> heads;
+        std::vector<std::array<int, 3>> points;
+        for (auto [w, h] : plan.resolutions) {
+            heads.push_back(std::to_string(w) + "×" + std::to_string(h));
+            points.push_back({w, h, plan.D});
+        }
+        sweep_table(o, plan, GROUP_RESOLUTION,
+                    std::string("Resolution sweep: mode exact, ") + plan.sweep_scene->name +
+                        ", D " + std::to_string(plan.D) + ": median ms/frame",
+                    heads, points);
+        heads.clear();
+        points.clear();
+        for (int d : plan.distances) {
+            heads.push_back("D " + std::to_string(d));
+            points.push_back({plan.W, plan.H, d});
+        }
+        sweep_table(o, plan, GROUP_DISTANCE,
+                    std::string("Distance sweep: mode exact, ") + plan.sweep_scene->name + ", " +
+                        std::to_string(plan.W) + "×" + std::to_string(plan.H) +
+                        ": median ms/frame",
+                    heads, points);
+    }
+    std::map<std::string, std::string> skipped; // kernel -> first reason
+    for (const auto &c : plan.cases)
+        if (c->ran && !c->error.empty())
+            skipped.emplace(c->kernel->name, c->error);
+    if (!skipped.empty()) {
+        o << "\nSkipped (– in the tables):\n\n";
+        for (const auto &[k, why] : skipped)
+            o << "- `" << k << "`: " << why << "\n";
+    }
+    o << "\n![speedup over naive](bench-speedup.svg)\n"
+      << "![ms/frame against resolution](bench-resolution.svg)\n"
+      << "![ms/frame against distance](bench-distance.svg)\n";
+    std::ofstream f(path);
+    f << o.str();
+    f.close();
+    if (!f) {
+        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+        return false;
+    }
+    return true;
+}

@@ -1,0 +1,88 @@
+// Case planning: the kernel-by-scene matrix in both modes, then the two sweeps.
+#include "cases.h"
+
+#include <algorithm>
+
+static bool same(const BenchCase &c, const retro_kernel *k, int threads, const bench_scene *s,
+                 retro_mode mode, int w, int h, int d)
+{
+    return c.kernel == k && c.threads == threads && c.scene == s && c.mode == mode && c.W == w &&
+           c.H == h && c.D == d;
+}
+
+const BenchCase *BenchPlan::find(const retro_kernel *k, int threads, const bench_scene *s,
+                                 retro_mode mode, int w, int h, int d) const
+{
+    for (const auto &c : cases)
+        if (same(*c, k, threads, s, mode, w, h, d))
+            return c.get();
+    return nullptr;
+}
+
+std::vector<int> plan_thread_counts(const retro_kernel *k, int cores)
+{
+    std::vector<int> t{1};
+    if (!(k->flags & RETRO_KF_THREADED))
+        return t;
+    for (int n = 2; n < cores; n *= 2)
+        t.push_back(n);
+    if (cores > 1)
+        t.push_back(cores);
+    return t;
+}
+
+static void add(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
+                retro_mode mode, int w, int h, int d, unsigned group)
+{
+    for (auto &have : plan->cases)
+        if (same(*have, k, threads, s, mode, w, h, d)) {
+            have->groups |= group;
+            return;
+        }
+    auto c = std::make_unique<BenchCase>();
+    c->kernel = k;
+    c->kernel_index = static_cast<int>(k - retro_kernels);
+    c->threads = threads;
+    c->scene = s;
+    c->mode = mode;
+    c->W = w;
+    c->H = h;
+    c->D = d;
+    c->groups = group;
+    c->name = std::string(retro_mode_name(mode)) + "/" + s->name + "/" + k->name + "/" +
+              std::to_string(threads) + "t/" + std::to_string(w) + "x" + std::to_string(h) +
+              "/D" + std::to_string(d);
+    plan->cases.push_back(std::move(c));
+}
+
+void plan_cases(BenchPlan *plan)
+{
+    for (retro_mode mode : plan->modes) {
+        for (size_t i = 0; i < retro_kernel_count; i++) {
+            const retro_kernel *k = &retro_kernels[i];
+            if (!retro_kernel_has_mode(k, mode))
+                continue;
+            for (int t : plan_thread_counts(k, plan->cores))
+                for (const bench_scene *s : plan->scenes)
+                    add(plan, k, t, s, mode, plan->W, plan->H, plan->D, GROUP_MATRIX);
+        }
+    }
+    if (!plan->sweep_scene)
+        return;
+    // The sweeps compare the fastest kernel with the y-buffer baseline; a threaded best
+    // kernel is swept at all cores, the way it would be used.
+    std::vector<const retro_kernel *> sweep;
+    for (const retro_kernel *k :
+         {retro_kernel_find("ybuffer"), retro_kernel_best(RETRO_MODE_EXACT)})
+        if (k && std::find(sweep.begin(), sweep.end(), k) == sweep.end())
+            sweep.push_back(k);
+    std::sort(sweep.begin(), sweep.end());
+    for (const retro_kernel *k : sweep) {
+        int t = plan_thread_counts(k, plan->cores).back();
+        for (auto [w, h] : plan->resolutions)
+            add(plan, k, t, plan->sweep_scene, RETRO_MODE_EXACT, w, h, plan->D, GROUP_RESOLUTION);
+        for (int d : plan->distances)
+            add(plan, k, t, plan->sweep_scene, RETRO_MODE_EXACT, plan->W, plan->H, d,
+                GROUP_DISTANCE);
+    }
+}

@@ -1,0 +1,60 @@
+// The benchmark's cases: every (kernel, threads, scene, mode, screen, distance) it times,
+// planned from the one kernel table so new kernels appear without editing the bench.
+#ifndef RETRO_BENCH_CASES_H
+#define RETRO_BENCH_CASES_H
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "retro.h"
+#include "scenes.h"
+
+// Which tables of BENCH.md show a case; the sweeps share their 640x480, D 800 point with the
+// kernel-by-scene table, so one case can belong to several.
+enum : unsigned {
+    GROUP_MATRIX = 1u << 0,
+    GROUP_RESOLUTION = 1u << 1,
+    GROUP_DISTANCE = 1u << 2,
+};
+
+struct BenchCase {
+    const retro_kernel *kernel;
+    int kernel_index;            // row of retro_kernels[], for stable ordering
+    int threads;                 // retro_ctx.threads; 1 for kernels without RETRO_KF_THREADED
+    const bench_scene *scene;
+    retro_mode mode;
+    int W, H, D;
+    unsigned groups;             // GROUP_* bits
+    std::string name;            // mode/scene/kernel/threads/WxH/D: the benchmark's name
+
+    // Filled by the reporter once the case has run.
+    bool ran = false;
+    double median_ms = std::numeric_limits<double>::quiet_NaN(); // median ms/frame
+    double cv = std::numeric_limits<double>::quiet_NaN();        // spread over repetitions
+    std::string error;           // non-empty when the case was skipped
+};
+
+struct BenchPlan {
+    std::vector<std::unique_ptr<BenchCase>> cases;
+    std::vector<retro_mode> modes;                  // the matrix modes, in table order
+    std::vector<const bench_scene *> scenes;        // the matrix columns
+    const bench_scene *sweep_scene = nullptr;       // the scene both sweeps render
+    std::vector<std::pair<int, int>> resolutions;   // resolution sweep, D = matrix D
+    std::vector<int> distances;                     // distance sweep, screen = matrix screen
+    int W = 640, H = 480, D = 800;                  // the matrix frame
+    int cores = 1;
+
+    // The case with exactly these parameters, or nullptr.
+    const BenchCase *find(const retro_kernel *k, int threads, const bench_scene *s,
+                          retro_mode mode, int W, int H, int D) const;
+};
+
+// Thread counts a kernel is timed at: 1 unless threaded, else 1, 2, 4 ... and cores.
+std::vector<int> plan_thread_counts(const retro_kernel *k, int cores);
+
+// Fills plan->cases from the kernel table, the modes, scenes and sweep lists already in plan.
+void plan_cases(BenchPlan *plan);
+
+#endif

@@ -1,0 +1,115 @@
+// Command line: our options and the defaults handed to google-benchmark.
+#include "options.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+void options_usage()
+{
+    std::printf(
+        "usage: retro-bench [--quick] [--report=DIR] [--charts=FILE] [--scene=PREFIX]\n"
+        "                   [--size=WxH] [--distance=D] [--modes=LIST] [--benchmark_...]\n\n"
+        "  --quick         3 repetitions of 0.01 s, no warm-up beyond each case's first\n"
+        "                  frame, 3 points per sweep (make bench QUICK=1)\n"
+        "  --report=DIR    write DIR/BENCH.md from the run\n"
+        "  --charts=FILE   write the run's charts as a gnuplot script\n"
+        "  --scene=PREFIX  only this map, at its default view (e.g. maps/test/flat-64)\n"
+        "  --size=WxH      screen of the kernel-by-scene cases (default 640x480)\n"
+        "  --distance=D    distance of the kernel-by-scene cases (default 800)\n"
+        "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n\n"
+        "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
+        "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"
+        "Every --benchmark_* flag of google-benchmark works; given flags override the\n"
+        "defaults --benchmark_repetitions=5 --benchmark_min_time=0.05\n"
+        "--benchmark_min_warmup_time=0.05 (quick: 3, 0.01, 0).\n");
+}
+
+// The last value given for --NAME=, or def.
+static std::string flag_value(const std::vector<char *> &args, const char *name, const char *def)
+{
+    std::string key = std::string("--") + name + "=", v = def;
+    for (const char *a : args)
+        if (a && std::strncmp(a, key.c_str(), key.size()) == 0)
+            v = a + key.size();
+    return v;
+}
+
+std::vector<char *> options_benchmark_args(int argc, char **argv, bool quick, RunContext *ctx)
+{
+    // Warm-up is the global flag: this google-benchmark (1.7) ignores ->MinWarmUpTime()
+    // unless ->MinTime() is set too, which would in turn override --benchmark_min_time.
+    // Quick runs rely on the untimed first frame of each case alone.
+    static char reps[] = "--benchmark_repetitions=5", qreps[] = "--benchmark_repetitions=3";
+    static char mt[] = "--benchmark_min_time=0.05", qmt[] = "--benchmark_min_time=0.01";
+    static char wu[] = "--benchmark_min_warmup_time=0.05";
+    static char qwu[] = "--benchmark_min_warmup_time=0";
+    std::vector<char *> args{argv[0], quick ? qreps : reps, quick ? qmt : mt, quick ? qwu : wu};
+    args.insert(args.end(), argv + 1, argv + argc);
+    ctx->repetitions = std::atoi(flag_value(args, "benchmark_repetitions", "1").c_str());
+    ctx->min_time = flag_value(args, "benchmark_min_time", "");
+    ctx->warmup = flag_value(args, "benchmark_min_warmup_time", "");
+    ctx->filter = flag_value(args, "benchmark_filter", "");
+    args.push_back(nullptr);
+    return args;
+}
+
+// Every mode of the API unless --modes names some, so new modes are timed unasked.
+static bool parse_modes(const std::string &list, std::vector<retro_mode> *modes)
+{
+    for (int m = 0; list.empty() && m < RETRO_MODE_COUNT; m++)
+        modes->push_back(static_cast<retro_mode>(m));
+    for (size_t at = 0; !list.empty() && at <= list.size();) {
+        size_t end = std::min(list.find(',', at), list.size());
+        retro_mode m;
+        if (retro_mode_parse(list.substr(at, end - at).c_str(), &m)) {
+            std::string all;
+            for (int i = 0; i < RETRO_MODE_COUNT; i++)
+                all += std::string(i ? ", " : "") + retro_mode_name(static_cast<retro_mode>(i));
+            std::fprintf(stderr, "retro-bench: bad --modes '%s' (%s)\n", list.c_str(), all.c_str());
+            return false;
+        }
+        modes->push_back(m);
+        at = end + 1;
+    }
+    return true;
+}
+
+static bool option(const std::string &a, const char *key, std::string *v)
+{
+    size_t n = std::strlen(key);
+    if (a.compare(0, n, key) != 0)
+        return false;
+    *v = a.substr(n);
+    return true;
+}
+
+bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
+{
+    std::string modes;
+    for (int i = 1; i < n; i++) {
+        std::string a = args[i], v;
+        bool ok = option(a, "--report=", &o->report_dir) || option(a, "--charts=", &o->charts) ||
+                  option(a, "--scene=", &o->scene) || option(a, "--modes=", &modes);
+        if (a == "--quick")
+            ok = o->quick = true;
+        else if (!ok && option(a, "--size=", &v))
+            ok = std::sscanf(v.c_str(), "%dx%d", &plan->W, &plan->H) == 2 && plan->W > 0 &&
+                 plan->H > 0;
+        else if (!ok && option(a, "--distance=", &v))
+            ok = std::sscanf(v.c_str(), "%d", &plan->D) == 1;
+        if (!ok) {
+            std::fprintf(stderr, "retro-bench: unknown or bad argument '%s' (--help)\n", args[i]);
+            return false;
+        }
+    }
+    if (o->quick) {
+        plan->resolutions = {{320, 240}, {640, 480}, {1920, 1080}};
+        plan->distances = {100, 800, 3000};
+    } else {
+        plan->resolutions = {{320, 240}, {640, 480}, {1280, 720}, {1920, 1080}};
+        plan->distances = {100, 200, 400, 800, 1600, 3000};
+    }
+    return parse_modes(modes, &plan->modes);
+}

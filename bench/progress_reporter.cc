@@ -1,0 +1,84 @@
+// Progress and collection: google-benchmark reports a case only after its last repetition,
+// so a line here means the case is done and its median final.
+#include "progress_reporter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+static const char *const kMsCounter = "ms/frame";
+
+ProgressReporter::ProgressReporter(BenchPlan *plan) : start_(std::chrono::steady_clock::now())
+{
+    for (auto &c : plan->cases)
+        by_name_[c->name] = c.get();
+}
+
+double ProgressReporter::seconds() const
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool ProgressReporter::ReportContext(const Context &)
+{
+    start_ = std::chrono::steady_clock::now();
+    return true;
+}
+
+static double counter(const benchmark::BenchmarkReporter::Run &r, const char *name)
+{
+    auto it = r.counters.find(name);
+    return it == r.counters.end() ? NAN : it->second.value;
+}
+
+void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
+{
+    if (runs.empty())
+        return;
+    // function_name is the name we registered; the full name carries suffixes such as
+    // "/real_time" that the case table does not know about.
+    auto it = by_name_.find(runs.front().run_name.function_name);
+    if (it == by_name_.end())
+        return;
+    BenchCase *c = it->second;
+    // A case arrives in two calls, its repetitions then their aggregates; the second call
+    // is skipped when there are no aggregates (one repetition, or every one failed) and,
+    // with --benchmark_display_aggregates_only, the first is.
+    bool last = false;
+    std::vector<double> each;
+    for (const Run &r : runs) {
+        if (r.error_occurred) {
+            c->error = r.error_message;
+            last = true;
+        } else if (r.run_type == Run::RT_Aggregate) {
+            if (r.aggregate_name == "median")
+                c->median_ms = counter(r, kMsCounter);
+            else if (r.aggregate_name == "cv")
+                c->cv = counter(r, kMsCounter);
+            last = true;
+        } else {
+            each.push_back(counter(r, kMsCounter));
+            last |= r.repetitions <= 1;
+        }
+    }
+    // Our own median until (unless) the aggregate arrives.
+    if (!each.empty()) {
+        std::sort(each.begin(), each.end());
+        size_t n = each.size();
+        c->median_ms = n % 2 ? each[n / 2] : 0.5 * (each[n / 2 - 1] + each[n / 2]);
+    }
+    if (!last)
+        return;
+    c->ran = true;
+    done_++;
+    if (!c->error.empty())
+        std::fprintf(stderr, "[%3d] %6.1fs  %-46s skipped: %s\n", done_, seconds(),
+                     c->name.c_str(), c->error.c_str());
+    else if (std::isnan(c->cv))
+        std::fprintf(stderr, "[%3d] %6.1fs  %-46s %9.3f ms/frame\n", done_, seconds(),
+                     c->name.c_str(), c->median_ms);
+    else
+        std::fprintf(stderr, "[%3d] %6.1fs  %-46s %9.3f ms/frame  cv %4.1f%%\n", done_,
+                     seconds(), c->name.c_str(), c->median_ms, 100 * c->cv);
+}

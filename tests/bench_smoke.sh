@@ -1,0 +1,41 @@
+#!/bin/sh
+# retro-bench runs one tiny case and records it: in the JSON (with its counters), in BENCH.md
+# and in the charts script. A functional check, not a timing one: one short repetition.
+# usage: bench_smoke.sh RETRO   (retro-bench is taken from the same directory)
+set -u
+bench="$(dirname "$1")/retro-bench"
+case=exact/flat-64/naive/1t/32x24/D16
+if [ ! -x "$bench" ]; then
+  echo "FAIL: $bench not built (make check builds it)"
+  exit 1
+fi
+if [ ! -f maps/test/flat-64.pgm ]; then
+  echo "FAIL: maps/test/flat-64 missing (sh scripts/make-maps.sh RETRO test)"
+  exit 1
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
+  --benchmark_filter="^$case\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
+  --benchmark_min_warmup_time=0 --report="$tmp" --charts="$tmp/charts.gp" \
+  --benchmark_out="$tmp/bench.json" --benchmark_out_format=json >"$tmp/out" 2>&1; then
+  echo "FAIL: retro-bench exited with an error:"
+  cat "$tmp/out"
+  exit 1
+fi
+fail=0
+check() { # FILE PATTERN WHAT
+  if ! grep -q -- "$2" "$1"; then
+    echo "FAIL: $3 ($1 lacks $2)"
+    fail=1
+  fi
+}
+check "$tmp/bench.json" "\"name\": \"$case\"" "the case is not in the JSON"
+check "$tmp/bench.json" '"ms/frame"' "no ms/frame counter"
+check "$tmp/bench.json" '"Mpixel/s"' "no Mpixel/s counter"
+check "$tmp/bench.json" '"retro_binding"' "no binding in the JSON context"
+check "$tmp/BENCH.md" '| `naive` | 1 |' "no naive row in BENCH.md"
+check "$tmp/charts.gp" '"naive"' "no naive bar in the charts script"
+check "$tmp/out" "$case" "no progress line for the case"
+[ "$fail" = 0 ] && echo "ok: retro-bench timed $case"
+exit "$fail"
