@@ -46,7 +46,7 @@ COUNT_TESTS := $(BIN)/retro-count-tests
 all: $(RETRO) ## build the library and the retro CLI
 
 help: ## list the targets
-	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 16
+	@grep -hE '^[a-z-]+:.*## ' Makefile | sed 's/:.*## /\t/' | expand -t 16
 
 deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
@@ -54,15 +54,22 @@ deps: ## install missing Debian packages (compiler, libraries, tools)
 # Per-file flags: OpenMP only where threads are made.
 $(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o: CFLAGS_FILE := -fopenmp
 
+# Per-file ISA flags: each SIMD kernel file gets exactly its ISA, never -march=native and never
+# -mfma (with -ffp-contract=off above, no multiply-add is fused anywhere).
+$(BUILD)/src/kernel_simd_sse2.o $(BUILD)/count/kernel_simd_sse2.o: CFLAGS_ISA := -msse2
+$(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o: CFLAGS_ISA := -mavx2
+$(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o: \
+  CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(PKG_CFLAGS) -c $< -o $@
+	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) $(PKG_CFLAGS) -c $< -o $@
 
 $(BUILD)/count/%.o: src/%.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting writes)")
-	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) -DRETRO_COUNT_WRITES -c $< -o $@
+	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) -DRETRO_COUNT_WRITES -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	$(Q)rm -f $@ && ar rcs $@ $^
@@ -86,7 +93,7 @@ maps: $(RETRO) ## generate the default scenes and the analytic test maps under m
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 
 check: deps ## run the tests (installs what is missing first)
-	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS)
+	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
 
@@ -102,6 +109,35 @@ demo: deps ## render the default scenes to results/*.png
 asan: ## the tests under AddressSanitizer + UndefinedBehaviorSanitizer
 	$(Q)$(MAKE) --no-print-directory check BUILD=build/asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+
+# --- benchmark (bench/, scripts/bench.sh): the only C++, google-benchmark and hwloc -------
+BENCH_BIN  := $(BIN)/retro-bench
+BENCH_PKGS := benchmark hwloc
+BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc)))
+QUICK      ?=
+BENCH_ARGS ?=
+
+$(BUILD)/bench/%.o: bench/%.cc
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CXX     $<")
+	$(Q)$(CXX) $(ALLCXXFLAGS) $(shell pkg-config --cflags $(BENCH_PKGS) 2>/dev/null) -c $< -o $@
+
+# The run's record names the compiler and flags the kernels were built with.
+$(BUILD)/bench/run_context.o: ALLCXXFLAGS += -DRETRO_BUILD_CC='"$(shell $(CC) --version | head -n 1)"' \
+  -DRETRO_BUILD_CFLAGS='"$(strip $(CFLAGS) $(FPFLAGS) $(SAN))"'
+
+$(BENCH_BIN): $(BENCH_OBJ) $(LIB)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CXX) $(SAN) -o $@ $(BENCH_OBJ) $(LIB) $(shell pkg-config --libs $(BENCH_PKGS)) -lpthread $(LDLIBS)
+
+.PHONY: bench
+bench: deps ## time every kernel, scene and mode: results/BENCH.md, bench.json, charts (QUICK=1)
+	$(Q)$(MAKE) --no-print-directory $(RETRO) $(BENCH_BIN)
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) results $(BUILD)/bench-charts.gp \
+	  $(if $(filter-out 0,$(QUICK)),--quick) $(BENCH_ARGS)
+# --- end of benchmark block ---------------------------------------------------------------
 
 accuracy: $(RETRO) ## what accuracy costs: results/ACCURACY.md and a Pareto chart
 	$(Q)sh scripts/make-maps.sh $(RETRO)

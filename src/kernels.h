@@ -11,6 +11,9 @@ void retro_course_start(const retro_frame *f, float *qx, float *qy);
 void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+void retro_strip_simd_sse2(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+void retro_strip_simd_avx2(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+void retro_strip_simd_avx512(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
 /* The strip of the fastest single-thread kernel this CPU runs for mode that implements the
  * per-sample effects fx. */
@@ -18,6 +21,9 @@ retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx);
 
 void retro_kernel_naive(const retro_frame *f, retro_ctx *rc);
 void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_simd_sse2(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_simd_avx2(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_simd_avx512(const retro_frame *f, retro_ctx *rc);
 void retro_kernel_omp(const retro_frame *f, retro_ctx *rc);
 void retro_kernel_pthreads(const retro_frame *f, retro_ctx *rc);
 

@@ -1,0 +1,88 @@
+/* Shared by the SIMD kernels (kernel_simd_<isa>.c): the per-frame decision whether the vector
+ * path can reproduce SEMANTICS.md exactly, the packed map it reads, and the write-counting hook
+ * for vector pixel stores. The design note is at the top of kernel_simd_avx512.c. */
+#ifndef RETRO_SIMD_COMMON_H
+#define RETRO_SIMD_COMMON_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "retro.h"
+#include "retro_internal.h"
+
+/* The packed map is tiled: 4x4 cells of 4 bytes fill one 64-byte line, so the 16 columns of a
+ * vector, which sample along a line across the view, and the next distances, which move along
+ * it, hit a few lines whatever the view angle (row-major rows put a vector looking along x on
+ * 16 lines). Cell (i, j) is at retro_simd_tiled(i, j, T) with T = ceil(S / 4) tiles a row; the
+ * padding cells of a partial tile are never read. */
+#define RETRO_SIMD_TILE 4
+
+static inline size_t retro_simd_tiled(size_t i, size_t j, size_t tiles)
+{
+    return ((j / RETRO_SIMD_TILE) * tiles + i / RETRO_SIMD_TILE) * RETRO_SIMD_TILE * RETRO_SIMD_TILE +
+           (j % RETRO_SIMD_TILE) * RETRO_SIMD_TILE + i % RETRO_SIMD_TILE;
+}
+
+/* What a vector kernel needs beyond retro_frame, valid for one frame. */
+typedef struct retro_simd_frame {
+    const uint32_t *cells; /* the tiled packed map (colour | height per cell), or NULL: read
+                            * height_map and color_map (row-major) one lane at a time */
+    int tiles;             /* T: tiles per row of the packed map */
+    int32_t height;        /* camera height: h - height fits in int32 for every h in 0..255 */
+    int pow2_mask;         /* S - 1 when S is a power of two (wrap by masking), else -1 */
+    float fS;              /* (float)S, exact */
+    float inv_S;           /* 1.0f / S, for the remainder in float */
+    float fK;              /* mode course: the wrap period S - 1, exact */
+    float inv_K;           /* mode course: 1.0f / (S - 1), for fmodf in float */
+} retro_simd_frame;
+
+/* Mode course: the vector fmodf is exact while |q| < 2^23; retro_simd_check() sends a frame
+ * to the scalar kernel unless every line keeps its accumulators within this bound. */
+#define RETRO_SIMD_COURSE_BOUND 4194304.0 /* 2^22, leaving 2^22 for the rounding of W steps */
+/* Mode course: a truncated row beyond +-2^20 clamps to H or 0 whatever H/2 adds (H <= 2^14),
+ * so the vector kernels clamp the float there and convert it in int32. */
+#define RETRO_SIMD_ROW_CLAMP 1048576.0f
+
+/* Fills sf (reading the maps directly, cells = NULL) and returns 1 when the vector path is
+ * exact for f; returns 0 when the caller must use the scalar y-buffer instead: a mode other
+ * than exact and course, per-sample effects, a camera height near INT_MIN, or in mode course
+ * a position so far out that fmodf needs more than float. Touches no context, so strips of
+ * threaded kernels can call it. */
+int retro_simd_check(const retro_frame *f, retro_simd_frame *sf);
+
+/* Points sf at rc's packed map, rebuilt only when the maps or S changed since the last frame
+ * rendered with rc; leaves sf->cells NULL if a colour has a non-zero low byte (the packing
+ * would lose it) or memory is short. */
+void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf);
+
+/* The colour bits of a packed cell: SEMANTICS.md colours have a zero low byte, which the
+ * packing fills with the height. */
+#define RETRO_SIMD_COLOR_MASK 0xffffff00u
+#define RETRO_SIMD_HEIGHT_MASK 0xffu
+
+/* Rows y+1..v of column u (0-based) get colour, each store through RETRO_PUT: the paint of
+ * the kernels whose lanes do not lie along a row of out. The frame's fields are read once:
+ * a pixel store may alias them, which would reload them every row. */
+static inline void retro_simd_span(const retro_frame *f, int u, int y, int v, uint32_t colour)
+{
+    uint32_t *out = f->out;
+    const ptrdiff_t W = f->W;
+    ptrdiff_t i = (ptrdiff_t)(f->H - y - 1) * W + u;
+    for (int r = y + 1; r <= v; r++, i -= W)
+        RETRO_PUT(out, (size_t)i, colour);
+}
+
+/* Vector pixel stores bypass RETRO_PUT, so the counting build reports each stored lane of a
+ * masked store at base + lane to the same counter RETRO_PUT feeds. */
+#ifdef RETRO_COUNT_WRITES
+static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned lanes)
+{
+    for (; lanes; lanes &= lanes - 1)
+        retro_count_write(out, base + (size_t)__builtin_ctz(lanes));
+}
+#define RETRO_SIMD_COUNT(out, base, lanes) retro_simd_count((out), (base), (lanes))
+#else
+#define RETRO_SIMD_COUNT(out, base, lanes) ((void)0)
+#endif
+
+#endif

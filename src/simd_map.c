@@ -1,0 +1,84 @@
+/* The per-frame preparation the SIMD kernels share: whether the vector path is exact for this
+ * frame, and the packed, tiled map it reads (colour | height in one uint32 per cell). */
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "simd_common.h"
+
+/* Packs the maps into rc->simd_cells; returns 0 if a colour has a non-zero low byte (the
+ * packing would lose it) or memory is short. */
+static int pack_maps(const retro_frame *f, retro_ctx *rc)
+{
+    size_t S = (size_t)f->S, T = (S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
+    size_t n = T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE;
+    if (n > rc->simd_cells_cap) {
+        /* The old cells are not worth copying, so free first: the peak stays one packed map. */
+        free(rc->simd_cells);
+        rc->simd_cells_cap = 0;
+        /* Whole tiles on whole cache lines: n * 4 bytes is a multiple of 64. */
+        rc->simd_cells = aligned_alloc(64, n * sizeof *rc->simd_cells);
+        if (!rc->simd_cells)
+            return 0;
+        rc->simd_cells_cap = n;
+    }
+    const uint8_t *h = f->height_map;
+    const uint32_t *c = f->color_map;
+    uint32_t low = 0;
+    for (size_t j = 0; j < S; j++) {
+        for (size_t i = 0; i < S; i++) {
+            low |= c[j * S + i];
+            rc->simd_cells[retro_simd_tiled(i, j, T)] = c[j * S + i] | h[j * S + i];
+        }
+    }
+    return (low & RETRO_SIMD_HEIGHT_MASK) == 0;
+}
+
+/* Every accumulator of mode course stays below 2^23 in magnitude: each line starts and ends
+ * within RETRO_SIMD_COURSE_BOUND, and W additions, each rounded by at most half an ulp of a
+ * value below 2^23 (0.25), drift by at most 2^14 * 0.25 beyond it. Written so that an
+ * infinite or NaN line (a position near FLT_MAX) fails the test. */
+static int course_in_bound(const retro_frame *f)
+{
+    const double W = f->W;
+    for (int d = 1; d < f->D; d++) {
+        double x = fabs((double)f->lx[d]) + W * fabs((double)f->sx[d]);
+        double y = fabs((double)f->ly[d]) + W * fabs((double)f->sy[d]);
+        if (!(x <= RETRO_SIMD_COURSE_BOUND && y <= RETRO_SIMD_COURSE_BOUND))
+            return 0;
+    }
+    return 1;
+}
+
+int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
+{
+    if ((f->mode != RETRO_MODE_EXACT && f->mode != RETRO_MODE_COURSE) || f->fx)
+        return 0;
+    /* The vector path converts h - height from int32; below this bound h - height exceeds
+     * INT_MAX for h = 255, and only the scalar path rounds the 64-bit difference once. */
+    if (f->height < (int64_t)INT_MIN + 256)
+        return 0;
+    if (f->mode == RETRO_MODE_COURSE && !course_in_bound(f))
+        return 0;
+    sf->cells = NULL;
+    sf->tiles = (f->S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
+    sf->height = (int32_t)f->height;
+    sf->pow2_mask = (f->S & (f->S - 1)) == 0 ? f->S - 1 : -1;
+    sf->fS = (float)f->S;
+    sf->inv_S = 1.0f / (float)f->S;
+    sf->fK = (float)(f->S - 1);
+    sf->inv_K = f->S > 1 ? 1.0f / sf->fK : 0.0f;
+    return 1;
+}
+
+void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf)
+{
+    if (rc->simd_height_map != f->height_map || rc->simd_color_map != f->color_map ||
+        rc->simd_map_size != f->S) {
+        rc->simd_cells_ok = pack_maps(f, rc);
+        rc->simd_height_map = f->height_map;
+        rc->simd_color_map = f->color_map;
+        rc->simd_map_size = f->S;
+    }
+    sf->cells = rc->simd_cells_ok ? rc->simd_cells : NULL;
+}
