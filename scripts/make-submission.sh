@@ -7,6 +7,10 @@ out=$1
 tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
+# The project's files, in dependency order; the two SIMD files are added by amalgamate-isa.sh.
+parts="include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/simd_common.h
+  src/frame.c src/effects_bake.c src/course_accum.c src/kernel_ybuffer.c src/simd_map.c
+  src/kernel_simd_avx2.c src/kernel_simd_avx512.c src/submission/dispatch.c src/kernel_pthreads.c src/course.c"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
   cat <<HDR
@@ -15,25 +19,37 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
  *
  * render() is mode course of SEMANTICS.md, byte-identical to the course's reference images:
  * front to back with a per-column y-buffer (each pixel written exactly once, no sky fill),
+ * 16 (AVX-512) or 8 (AVX2) distances per vector chosen at run time by the CPU's features,
  * columns split in chunks across threads (pthreads, in libc since glibc 2.34), each thread
  * replaying the course's accumulated positions exactly. Builds with -Wall -Wextra -pedantic,
  * linked with -lm only. */
 #define RETRO_SUBMISSION 1
 #include "render.h"
 
-#include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
-#include <stddef.h>
-#include <stdint.h>
-#include <stdlib.h>
-#include <string.h>
+/* The course builds without -ffp-contract=off, and its compilers fuse a*b + c into one
+ * rounding wherever the target has FMA (AVX-512 implies it): that would change pixels, so
+ * contraction is switched off for the whole file. */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
 HDR
-  for f in include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/frame.c \
-           src/effects_bake.c src/course_accum.c \
-           src/kernel_ybuffer.c src/submission/dispatch.c src/kernel_pthreads.c src/course.c; do
-    printf '\n/* ---- %s ---- */\n' "$f"
-    grep -v '^#include' "$f"
+  # The system headers every part includes, once each.
+  echo
+  grep -h '^#include <' $parts | sort -u
+  part() { printf '\n/* ---- %s ---- */\n' "$1"; grep -v '^#include' "$1"; }
+  for f in include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/simd_common.h \
+           src/frame.c src/effects_bake.c src/course_accum.c src/kernel_ybuffer.c src/simd_map.c; do
+    part "$f"
+  done
+  # The SIMD strips, each compiled for its ISA and chosen at run time by the CPU's features.
+  printf '\n/* ---- src/kernel_simd_avx2.c ---- */\n'
+  sh scripts/amalgamate-isa.sh src/kernel_simd_avx2.c avx2_ avx2
+  printf '\n/* ---- src/kernel_simd_avx512.c ---- */\n'
+  sh scripts/amalgamate-isa.sh src/kernel_simd_avx512.c avx512_ avx2,avx512f,avx512bw,avx512vl,avx512dq
+  for f in src/submission/dispatch.c src/kernel_pthreads.c src/course.c; do
+    part "$f"
   done
 } >"$tmp"
 mv "$tmp" "$out"
