@@ -113,7 +113,9 @@ asan: ## the tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # --- benchmark (bench/, scripts/bench.sh): the only C++, google-benchmark and hwloc -------
 BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
-BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc)))
+BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) \
+              $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
+SUBMISSION_SRC := $(wildcard src/*.c src/*.h include/*.h src/submission/*.c) scripts/make-submission.sh
 QUICK      ?=
 BENCH_ARGS ?=
 
@@ -121,6 +123,25 @@ $(BUILD)/bench/%.o: bench/%.cc
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CXX     $<")
 	$(Q)$(CXX) $(ALLCXXFLAGS) $(shell pkg-config --cflags $(BENCH_PKGS) 2>/dev/null) -c $< -o $@
+
+# The course's baseline and the generated submission are built as the course builds them: -O3
+# alone. The submission's every global but render() is made local (it repeats the library's
+# symbols) and render() becomes submission_render().
+$(BUILD)/bench/course_painter.o: OPT := -O3
+$(BUILD)/bench/submission.o: $(SUBMISSION_SRC)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      results/submission/render.c (-O3, for the benchmark)")
+	$(Q)sh scripts/make-submission.sh $(BUILD)/bench/submission.c
+	$(Q)$(CC) -O3 -Wall -Wextra -pedantic -Iinclude -c $(BUILD)/bench/submission.c -o $@.tmp.o
+	$(Q)objcopy --redefine-sym render=submission_render $@.tmp.o $@.tmp2.o
+	$(Q)objcopy --keep-global-symbol=submission_render $@.tmp2.o $@
+	$(Q)rm -f $@.tmp.o $@.tmp2.o
+# ybuffer without its effect code, to show that effects not called for cost nothing.
+$(BUILD)/bench/ybuffer_noeffects.o: src/kernel_ybuffer.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $< (effects compiled out)")
+	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_NO_EFFECTS -Dretro_kernel_ybuffer=retro_kernel_ybuffer_noeffects \
+	  -Dretro_strip_ybuffer=retro_strip_ybuffer_noeffects -c $< -o $@
 
 # The run's record names the compiler and flags the kernels were built with.
 $(BUILD)/bench/run_context.o: ALLCXXFLAGS += -DRETRO_BUILD_CC='"$(shell $(CC) --version | head -n 1)"' \

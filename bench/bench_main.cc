@@ -10,6 +10,7 @@
 
 #include "bench_report.h"
 #include "cases.h"
+#include "extras.h"
 #include "options.h"
 #include "pin.h"
 #include "progress_reporter.h"
@@ -54,23 +55,30 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         retro_ctx_free(&live.rc);
         retro_ctx_init(&live.rc);
         live.rc.threads = c->threads;
+        live.rc.fx = c->fx;
         live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
         live.owner = c;
         bind_for(c->threads);
         // Once per case, untimed: it validates the input and grows the context (and a
         // threaded kernel's pool), so that no timed frame allocates.
         frame.out = live.out.data();
-        live.first = retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+        live.first = c->direct ? RETRO_OK : retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
     }
     frame.out = live.out.data();
     if (live.first) {
         st.SkipWithError(retro_strerror(live.first));
         return;
     }
-    for (auto _ : st) {
-        retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
-        benchmark::ClobberMemory();
-    }
+    if (c->direct)
+        for (auto _ : st) {
+            c->direct(&p, &frame);
+            benchmark::ClobberMemory();
+        }
+    else
+        for (auto _ : st) {
+            retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+            benchmark::ClobberMemory();
+        }
     using benchmark::Counter;
     // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
     // same clock (CPU or real) as the case's own time.
@@ -134,6 +142,8 @@ int main(int argc, char **argv)
     }
     plan.cores = ctx.cores;
     plan_cases(&plan);
+    if (!opt.no_extras && opt.scene.empty())
+        plan_extras(&plan);
     for (const auto &c : plan.cases) {
         auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
         b->Unit(benchmark::kMillisecond);

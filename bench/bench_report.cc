@@ -1,5 +1,6 @@
 // BENCH.md: the run's context, then one markdown table per question a reader asks.
 #include "bench_report.h"
+#include "extras.h"
 
 #include <algorithm>
 #include <array>
@@ -168,6 +169,7 @@ bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunCon
                         ": median ms/frame",
                     heads, points);
     }
+    extras_tables(o, plan);
     std::map<std::string, std::string> skipped; // kernel -> first reason
     for (const auto &c : plan.cases)
         if (c->ran && !c->error.empty())

@@ -6,7 +6,8 @@
 static bool same(const BenchCase &c, const retro_kernel *k, int threads, const bench_scene *s,
                  retro_mode mode, int w, int h, int d)
 {
-    return c.kernel == k && c.threads == threads && c.scene == s && c.mode == mode && c.W == w &&
+    return !c.direct && !c.fx && !(c.groups & (GROUP_SUBMISSION | GROUP_EFFECTS)) && c.kernel == k &&
+           c.threads == threads && c.scene == s && c.mode == mode && c.W == w &&
            c.H == h && c.D == d;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "retro.h"
+#include "retro_scene.h"
 #include "scenes.h"
 
 // Which tables of BENCH.md show a case; the sweeps share their 640x480, D 800 point with the
@@ -17,6 +18,8 @@ enum : unsigned {
     GROUP_MATRIX = 1u << 0,
     GROUP_RESOLUTION = 1u << 1,
     GROUP_DISTANCE = 1u << 2,
+    GROUP_SUBMISSION = 1u << 3, // extras.cc: the course painter and the submission
+    GROUP_EFFECTS = 1u << 4,    // extras.cc: what each effect costs
 };
 
 struct BenchCase {
@@ -28,6 +31,11 @@ struct BenchCase {
     int W, H, D;
     unsigned groups;             // GROUP_* bits
     std::string name;            // mode/scene/kernel/threads/WxH/D: the benchmark's name
+    // Extras (extras.cc), never matched as matrix cases: a course-style render() called
+    // directly instead of a kernel, or the effects the frame simulates.
+    void (*direct)(const player_t *, ctx_t *) = nullptr;
+    const retro_effects *fx = nullptr;
+    std::string label;           // the row's name in its extra table
 
     // Filled by the reporter once the case has run.
     bool ran = false;

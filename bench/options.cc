@@ -15,7 +15,8 @@ void options_usage()
         "                  frame, 3 points per sweep (make bench QUICK=1)\n"
         "  --report=DIR    write DIR/BENCH.md from the run\n"
         "  --charts=FILE   write the run's charts as a gnuplot script\n"
-        "  --scene=PREFIX  only this map, at its default view (e.g. maps/test/flat-64)\n"
+        "  --scene=PREFIX  only this map, at its default view (e.g. maps/test/flat-64); no extras\n"
+        "  --no-extras     leave out the course-submission and effect-cost tables\n"
         "  --size=WxH      screen of the kernel-by-scene cases (default 640x480)\n"
         "  --distance=D    distance of the kernel-by-scene cases (default 800)\n"
         "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n\n"
@@ -94,6 +95,8 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
                   option(a, "--scene=", &o->scene) || option(a, "--modes=", &modes);
         if (a == "--quick")
             ok = o->quick = true;
+        else if (a == "--no-extras")
+            ok = o->no_extras = true;
         else if (!ok && option(a, "--size=", &v))
             ok = std::sscanf(v.c_str(), "%dx%d", &plan->W, &plan->H) == 2 && plan->W > 0 &&
                  plan->H > 0;

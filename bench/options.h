@@ -14,6 +14,7 @@ struct Options {
     std::string report_dir; // --report: where BENCH.md goes
     std::string charts;     // --charts: the gnuplot script of the charts
     std::string scene;      // --scene: one map prefix instead of the default scenes
+    bool no_extras = false; // --no-extras: leave out the submission and effect tables
 };
 
 void options_usage();

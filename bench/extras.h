@@ -1,0 +1,18 @@
+// Cases beyond the kernel matrix: the course's plain painter against the generated
+// submission (issue: make submission), and what each effect costs, including ybuffer with its
+// effect code compiled out (it must cost nothing when a scene does not call for it).
+#ifndef RETRO_BENCH_EXTRAS_H
+#define RETRO_BENCH_EXTRAS_H
+
+#include <ostream>
+
+#include "cases.h"
+
+// Adds the extra cases for the plan's scenes: the submission table on the course scenes, the
+// effect table on islands. Call after plan_cases().
+void plan_extras(BenchPlan *plan);
+
+// The two tables, for BENCH.md; nothing when the cases were not planned.
+void extras_tables(std::ostream &o, const BenchPlan &plan);
+
+#endif
