@@ -77,6 +77,9 @@ typedef struct retro_frame {
     int64_t x0_fx, y0_fx, half_h_fx;
     const int64_t *rx_fx, *ry_fx; /* [W] */
     const int64_t *kd_fx;         /* [D] */
+    /* the context's packed colour|height map (src/simd_map.c) when a threaded kernel offers
+     * it to its strips, else NULL: strips then read the maps themselves */
+    const uint32_t *packed;
     /* per-sample effects in force (RETRO_FX_FOG, RETRO_FX_BILINEAR of retro_scene.h) */
     unsigned fx;
     const uint16_t *fog;  /* [D] fog weight 0..256 at distance d */

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Installs the Debian packages the suite needs, only those missing, as root or through sudo.
 set -eu
-PKGS="build-essential clang pkg-config libspng-dev libcriterion-dev libbenchmark-dev libhwloc-dev hwloc libinih-dev gnuplot-nox"
+# libclang-rt-dev (libFuzzer, clang's sanitizers) and libomp-dev (clang's OpenMP) are only
+# recommended by clang: make fuzz and the clang half of make asan need them.
+PKGS="build-essential clang libclang-rt-dev libomp-dev pkg-config libspng-dev libcriterion-dev libbenchmark-dev libhwloc-dev hwloc libinih-dev gnuplot-nox"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

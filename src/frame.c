@@ -197,8 +197,10 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle, const retro_ef
     int n = 1;
     for (int64_t d = 1; d < f->D; n++) {
         rc->dist[n] = (int)d;
-        int64_t step = (int64_t)floor((double)d * lambda);
-        d += step > 1 ? step : 1;
+        /* Compared in double before converting: a huge or infinite lambda (rc->lod is public)
+         * would overflow int64_t, and a NaN one has no step; D ends the walk either way. */
+        double step = floor((double)d * lambda);
+        d += step > 1 && step < (double)f->D ? (int64_t)step : step >= (double)f->D ? f->D : 1;
     }
     f->ndist = n;
     cap_rows(rc, n, row_lod);
@@ -258,6 +260,36 @@ static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
     cap_rows(rc, f->D, row_course);
 }
 
+static int in(float v, float lo, float hi)
+{
+    return v >= lo && v <= hi; /* false for NaN */
+}
+
+/* The ranges docs/EFFECTS.md gives (the scene parser enforces the same): outside them a
+ * float-to-int conversion in the bake or the fog table could overflow. */
+static int effects_valid(const retro_effects *fx)
+{
+    unsigned f = fx->flags;
+    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
+                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
+        return 0;
+    if (f & RETRO_FX_SHADE) {
+        float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
+        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
+            return 0;
+    }
+    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
+                                  in(fx->water_alpha_per_unit, 0, 1)))
+        return 0;
+    if ((f & RETRO_FX_LOD) && !in(fx->lod, 1e-30f, 100))
+        return 0;
+    if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))
+        return 0;
+    if ((f & RETRO_FX_MORPH) && (!fx->morph_height || !in(fx->morph_t, 0, 1)))
+        return 0;
+    return 1;
+}
+
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c)
 {
     if (!rc || !p || !c || !c->height_map || !c->color_map || !c->out)
@@ -272,6 +304,8 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         return RETRO_EINVAL;
     if (c->distance > RETRO_MAX_DISTANCE || !isfinite(p->x) || !isfinite(p->y))
         return RETRO_EINVAL;
+    if (mode == RETRO_MODE_LOD && !in(rc->lod, 0, 100)) /* 0: the default */
+        return RETRO_EINVAL;
     int D = c->distance < 1 ? 1 : c->distance;
     retro_err e = reserve(rc, W, D);
     if (e)
@@ -281,7 +315,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     unsigned flags = fx ? fx->flags & RETRO_FX_ALL : 0;
     if (flags && mode != RETRO_MODE_EXACT && mode != RETRO_MODE_LOD)
         return RETRO_EINVAL; /* effects are defined on modes exact and lod */
-    if ((flags & RETRO_FX_MORPH) && !fx->morph_height)
+    if (flags && !effects_valid(fx))
         return RETRO_EINVAL;
     const uint8_t *hm = c->height_map;
     const uint32_t *cm = c->color_map;

@@ -15,6 +15,10 @@ void retro_strip_simd_sse2(const retro_frame *f, float *qx, float *qy, int u0, i
 void retro_strip_simd_avx2(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 void retro_strip_simd_avx512(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
+/* Builds rc's packed map when stale and offers it to strips through rc->frame.packed (NULL
+ * when the frame cannot use it): threaded kernels call it before their threads start. */
+void retro_simd_offer_packed(retro_ctx *rc);
+
 /* The strip of the fastest single-thread kernel this CPU runs for mode that implements the
  * per-sample effects fx. */
 retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx);

@@ -3,6 +3,7 @@
  * context, not per frame, because loading it costs milliseconds. */
 #include <hwloc.h>
 #include <omp.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,9 @@ struct retro_pool {
     unsigned long serial;  /* unique per pool in this process, never 0 */
     int cap_threads, cap_d;
     float *qx[RETRO_MAX_THREADS], *qy[RETRO_MAX_THREADS];
+    hwloc_bitmap_t caller;   /* the binding the calling thread had before the pool bound it */
+    int caller_saved;
+    pthread_t caller_thread;
     char binding[160];
 };
 
@@ -74,6 +78,27 @@ retro_pool *retro_pool_get(retro_ctx *rc, int threads, int d)
     return p;
 }
 
+void retro_pool_enter(retro_pool *p)
+{
+    /* Once per pool: a frame then costs no system call, as with OpenMP's own proc_bind, which
+     * binds the initial thread for good. */
+    if (!p->can_bind || p->caller_saved)
+        return;
+    if (!p->caller && !(p->caller = hwloc_bitmap_alloc()))
+        return;
+    p->caller_saved = hwloc_get_cpubind(p->topo, p->caller, HWLOC_CPUBIND_THREAD) == 0;
+    p->caller_thread = pthread_self();
+}
+
+/* Gives the thread that rendered its binding back when the context is freed on that thread. */
+static void pool_restore_caller(retro_pool *p)
+{
+    if (!p->caller_saved || !pthread_equal(p->caller_thread, pthread_self()))
+        return;
+    hwloc_set_cpubind(p->topo, p->caller, HWLOC_CPUBIND_THREAD);
+    bound_core = -1;
+}
+
 void retro_pool_bind(retro_pool *p, int t)
 {
     if (!p->can_bind)
@@ -120,6 +145,9 @@ void retro_pool_free(retro_ctx *rc)
         free(p->qx[t]);
         free(p->qy[t]);
     }
+    pool_restore_caller(p);
+    if (p->caller)
+        hwloc_bitmap_free(p->caller);
     if (p->have_topo)
         hwloc_topology_destroy(p->topo);
     free(p);

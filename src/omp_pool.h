@@ -12,6 +12,9 @@ typedef struct retro_pool retro_pool;
 /* The context's pool, created on first use; reserves course accumulators for `threads`
  * threads and distances < d. NULL when memory runs out. */
 retro_pool *retro_pool_get(retro_ctx *rc, int threads, int d);
+/* Saves the calling thread's binding before the pool first binds it as thread 0; it stays
+ * bound while the context lives and retro_ctx_free() on the same thread gives it back. */
+void retro_pool_enter(retro_pool *pool);
 /* Binds the calling thread to core (t mod cores) once, if the system supports binding. */
 void retro_pool_bind(retro_pool *pool, int t);
 float *retro_pool_qx(retro_pool *pool, int t);

@@ -43,7 +43,8 @@ typedef struct retro_simd_frame {
  * so the vector kernels clamp the float there and convert it in int32. */
 #define RETRO_SIMD_ROW_CLAMP 1048576.0f
 
-/* Fills sf (reading the maps directly, cells = NULL) and returns 1 when the vector path is
+/* Fills sf (cells = f->packed: the maps themselves unless a threaded kernel offered its
+ * context's packed map) and returns 1 when the vector path is
  * exact for f; returns 0 when the caller must use the scalar y-buffer instead: a mode other
  * than exact and course, per-sample effects, a camera height near INT_MIN, or in mode course
  * a position so far out that fmodf needs more than float. Touches no context, so strips of

@@ -60,7 +60,7 @@ int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
         return 0;
     if (f->mode == RETRO_MODE_COURSE && !course_in_bound(f))
         return 0;
-    sf->cells = NULL;
+    sf->cells = f->packed;
     sf->tiles = (f->S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
     sf->height = (int32_t)f->height;
     sf->pow2_mask = (f->S & (f->S - 1)) == 0 ? f->S - 1 : -1;
@@ -81,4 +81,15 @@ void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame
         rc->simd_map_size = f->S;
     }
     sf->cells = rc->simd_cells_ok ? rc->simd_cells : NULL;
+}
+
+void retro_simd_offer_packed(retro_ctx *rc)
+{
+    retro_frame *f = &rc->frame;
+    retro_simd_frame sf;
+    f->packed = NULL;
+    if (!retro_simd_check(f, &sf))
+        return;
+    retro_simd_use_packed(f, rc, &sf);
+    f->packed = sf.cells;
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "ref_exact.h"
+#include "retro_scene.h"
 #include "test_util.h"
 
 #define SKY 0x66a3ff00u
@@ -191,5 +192,37 @@ Test(frame, quarter_turns_are_exact)
         cr_assert(rc.frame.cs == want[i][0] && rc.frame.sn == want[i][1], "angle %d", angles[i]);
         cr_assert(rc.frame.rx[0] == want[i][0] - want[i][1], "t_1 must be -1 exactly");
     }
+    retro_ctx_free(&rc);
+}
+
+/* Effect parameters outside docs/EFFECTS.md's ranges (NaN included) are refused, not baked. */
+Test(frame, effect_parameters_out_of_range_are_errors)
+{
+    uint8_t h[4] = {0};
+    uint32_t col[4] = {0}, out[4];
+    ctx_t c = {2, 2, 2, 10, 0, h, col, out};
+    player_t p = {1, 1, 0, 10, 0, 0, 0};
+    retro_effects fx;
+    retro_ctx rc;
+    retro_ctx_init(&rc);
+    rc.fx = &fx;
+    for (int i = 0; i < 8; i++) {
+        retro_effects_defaults(&fx);
+        fx.morph_height = h;
+        switch (i) {
+        case 0: fx.flags = RETRO_FX_MORPH; fx.morph_t = NAN; break;
+        case 1: fx.flags = RETRO_FX_FOG; fx.fog_exp = 1; fx.fog_density = INFINITY; break;
+        case 2: fx.flags = RETRO_FX_FOG; fx.fog_start = NAN; break;
+        case 3: fx.flags = RETRO_FX_SHADE; fx.ambient = 1e30f; break;
+        case 4: fx.flags = RETRO_FX_SHADE; fx.sun[2] = 5; break;
+        case 5: fx.flags = RETRO_FX_WATER; fx.water_alpha0 = NAN; break;
+        case 6: fx.flags = RETRO_FX_WATER; fx.water_level = 256; break;
+        default: fx.flags = RETRO_FX_MORPH; fx.morph_height = NULL; break;
+        }
+        cr_expect_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_EINVAL, "case %d accepted", i);
+    }
+    retro_effects_defaults(&fx);
+    fx.flags = RETRO_FX_FOG | RETRO_FX_SHADE | RETRO_FX_WATER;
+    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "the defaults are valid");
     retro_ctx_free(&rc);
 }
