@@ -133,7 +133,9 @@ typedef struct retro_ctx {
 
 void retro_ctx_init(retro_ctx *rc);
 void retro_ctx_free(retro_ctx *rc);
-/* The height-map maximum is cached per map pointer; call this after editing a map in place. */
+/* The map's maximum and packed copies are cached per map pointer: call this after editing a
+ * map in place, or after freeing a map and loading another with the same context (its
+ * buffers may reuse the old addresses). */
 void retro_ctx_map_changed(retro_ctx *rc);
 
 /* Validates (player, ctx) for mode and fills rc->frame. Returns RETRO_OK or an error. */

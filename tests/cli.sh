@@ -56,6 +56,11 @@ done
 "$retro" accuracy --poses 1 -o "$tmp/acc.md" --chart "$tmp/acc.svg" 2>/dev/null &&
   [ "$(grep -c '^| [a-z]' "$tmp/acc.md")" -ge 8 ] && grep -q '<svg' "$tmp/acc.svg" ||
   { echo "FAIL: retro accuracy table and chart"; fails=$((fails + 1)); }
+# binary32 and binary64 disagree only at cell and row boundaries: a large error means a frame
+# was rendered from the wrong map (a stale cache across scenes).
+exact_err=$(awk -F'|' '$2 ~ /^ exact / { gsub(/[ %]/, "", $7); print $7 }' "$tmp/acc.md")
+awk -v e="$exact_err" 'BEGIN { exit !(e != "" && e + 0 < 1) }' ||
+  { echo "FAIL: retro accuracy: exact differs from truth in $exact_err% of pixels"; fails=$((fails + 1)); }
 expect_bad "unknown render mode" render $map -m approximate -o "$tmp/out.png"
 expect_bad "bad lod" render $map -m lod --lod -1 -o "$tmp/out.png"
 echo "cli: $fails failures"

@@ -18,7 +18,8 @@ typedef struct {
 
 typedef struct {
     const char *label, *what, *kernel;
-    double ms, speedup;
+    double ms, speedup;        /* the fastest kernel for the variant's mode */
+    double ms_y, speedup_y;    /* ybuffer, the same scalar kernel for every variant */
     double pixel_pct, col_pct, sil_mean, psnr;
     int sil_max;
 } acc_row;
