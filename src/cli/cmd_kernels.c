@@ -30,7 +30,7 @@ int cmd_kernels(int argc, char **argv)
                     strcat(modes, ",");
                 strcat(modes, retro_mode_name((retro_mode)m));
             }
-        printf("%-14s %-13s %-4s %-7s %s\n", k->name, modes, retro_kernel_runs_here(k) ? "yes" : "no",
+        printf("%-12s %-28s %-4s %-7s %s\n", k->name, modes, retro_kernel_runs_here(k) ? "yes" : "no",
                k->cpu ? retro_cpu_level_name(k->cpu) : "-", k->summary);
     }
     retro_ctx rc;
