@@ -279,65 +279,17 @@ static int course_sample(const retro_frame *f, float *qx, float *qy, int u, int 
 }
 
 /* One instantiation per (mode, power-of-two S, packed map), as in simd-avx512. */
-#define EXACT_STRIP(name, pow2, packed)                                                             \
-    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
-                     int u1)                                                                        \
-    {                                                                                               \
-        for (int u = u0; u < u1; u += LANES)                                                       \
-            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed);                \
-    }
-EXACT_STRIP(exact_any, 0, 0)
-EXACT_STRIP(exact_pow2, 1, 0)
-EXACT_STRIP(exact_any_packed, 0, 1)
-EXACT_STRIP(exact_pow2_packed, 1, 1)
-
-#define COURSE_STRIP(name, packed)                                                                  \
-    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
-                     float *qy, int u0, int u1)                                                     \
-    {                                                                                               \
-        for (int u = u0; u < u1; u++) {                                                             \
-            int y = 0, d = 1;                                                                       \
-            for (; d + LANES <= f->D; d += LANES)                                                   \
-                y = course_block(f, sf, k, qx, qy, u, y, d, packed);                                \
-            for (; d < f->D; d++)                                                                   \
-                y = course_sample(f, qx, qy, u, y, d);                                              \
-            retro_simd_span(f, u, y, f->H, f->sky);                                                 \
-        }                                                                                           \
-    }
-COURSE_STRIP(course_maps, 0)
-COURSE_STRIP(course_packed, 1)
-
-/* Columns [u0, u1) of a frame retro_simd_check() accepted. */
-static void render_strip(const retro_frame *f, const retro_simd_frame *sf, float *qx, float *qy, int u0,
-                   int u1)
+/* One column of mode course: blocks of LANES distances, then the remaining ones lane by lane. */
+static inline __attribute__((always_inline)) void course_column(const retro_frame *f, const retro_simd_frame *sf,
+                                                                const consts *k, float *qx, float *qy, int u,
+                                                                const int packed)
 {
-    consts k;
-    init_consts(&k, f, sf);
-    if (f->mode == RETRO_MODE_COURSE)
-        (sf->cells ? course_packed : course_maps)(f, sf, &k, qx, qy, u0, u1);
-    else if (sf->pow2_mask >= 0)
-        (sf->cells ? exact_pow2_packed : exact_pow2)(f, sf, &k, u0, u1);
-    else
-        (sf->cells ? exact_any_packed : exact_any)(f, sf, &k, u0, u1);
+    int y = 0, d = 1;
+    for (; d + LANES <= f->D; d += LANES)
+        y = course_block(f, sf, k, qx, qy, u, y, d, packed);
+    for (; d < f->D; d++)
+        y = course_sample(f, qx, qy, u, y, d);
+    retro_simd_span(f, u, y, f->H, f->sky);
 }
 
-void retro_strip_simd_sse2(const retro_frame *f, float *qx, float *qy, int u0, int u1)
-{
-    retro_simd_frame sf;
-    if (retro_simd_check(f, &sf))
-        render_strip(f, &sf, qx, qy, u0, u1);
-    else
-        retro_strip_ybuffer(f, qx, qy, u0, u1);
-}
-
-void retro_kernel_simd_sse2(const retro_frame *f, retro_ctx *rc)
-{
-    retro_simd_frame sf;
-    if (!retro_simd_check(f, &sf)) {
-        retro_kernel_ybuffer(f, rc);
-        return;
-    }
-    retro_simd_use_packed(f, rc, &sf);
-    retro_course_start(f, rc->qx, rc->qy);
-    render_strip(f, &sf, rc->qx, rc->qy, 0, f->W);
-}
+RETRO_SIMD_ENTRY_POINTS(sse2)

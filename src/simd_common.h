@@ -84,6 +84,124 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
 #define RETRO_SIMD_COUNT(out, base, lanes) retro_simd_count((out), (base), (lanes))
 #else
 #define RETRO_SIMD_COUNT(out, base, lanes) ((void)0)
+/* The strip loops and the two entry points every SIMD file shares, expanded at the end of
+ * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
+ * are that file's own. The names it makes carry the ISA, so that the files concatenated into
+ * one (the submission) do not collide. Each loop is one instantiation with pow2 and packed
+ * as constants. */
+#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed)                                                 \
+    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
+                     int u1)                                                                        \
+    {                                                                                               \
+        for (int u = u0; u < u1; u += LANES)                                                       \
+            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed);                \
+    }
+#define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
+    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
+                     float *qy, int u0, int u1)                                                     \
+    {                                                                                               \
+        for (int u = u0; u < u1; u++)                                                               \
+            course_column(f, sf, k, qx, qy, u, packed);                                             \
+    }
+#define RETRO_SIMD_ENTRY_POINTS(isa)                                                               \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0)                                                  \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0)                                                 \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1)                                           \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1)                                          \
+    RETRO_SIMD_COURSE_STRIP(isa##_course_maps, 0)                                                  \
+    RETRO_SIMD_COURSE_STRIP(isa##_course_packed, 1)                                                \
+    /* Columns [u0, u1) of a frame retro_simd_check() accepted. */                                \
+    static void isa##_render_strip(const retro_frame *f, const retro_simd_frame *sf, float *qx,    \
+                                   float *qy, int u0, int u1)                                       \
+    {                                                                                               \
+        consts k;                                                                                   \
+        init_consts(&k, f, sf);                                                                     \
+        if (f->mode == RETRO_MODE_COURSE)                                                           \
+            (sf->cells ? isa##_course_packed : isa##_course_maps)(f, sf, &k, qx, qy, u0, u1);       \
+        else if (sf->pow2_mask >= 0)                                                                \
+            (sf->cells ? isa##_exact_pow2_packed : isa##_exact_pow2)(f, sf, &k, u0, u1);            \
+        else                                                                                        \
+            (sf->cells ? isa##_exact_any_packed : isa##_exact_any)(f, sf, &k, u0, u1);              \
+    }                                                                                               \
+    void retro_strip_simd_##isa(const retro_frame *f, float *qx, float *qy, int u0, int u1)        \
+    {                                                                                               \
+        retro_simd_frame sf;                                                                        \
+        if (retro_simd_check(f, &sf))                                                               \
+            isa##_render_strip(f, &sf, qx, qy, u0, u1);                                             \
+        else                                                                                        \
+            retro_strip_ybuffer(f, qx, qy, u0, u1);                                                 \
+    }                                                                                               \
+    void retro_kernel_simd_##isa(const retro_frame *f, retro_ctx *rc)                              \
+    {                                                                                               \
+        retro_simd_frame sf;                                                                        \
+        if (!retro_simd_check(f, &sf)) {                                                            \
+            retro_kernel_ybuffer(f, rc);                                                            \
+            return;                                                                                 \
+        }                                                                                           \
+        retro_simd_use_packed(f, rc, &sf);                                                          \
+        retro_course_start(f, rc->qx, rc->qy);                                                      \
+        isa##_render_strip(f, &sf, rc->qx, rc->qy, 0, f->W);                                        \
+    }
+
 #endif
+
+/* The strip loops and the two entry points every SIMD file shares, expanded at the end of
+ * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
+ * are that file's own. The names it makes carry the ISA, so that the files concatenated into
+ * one (the submission) do not collide. Each loop is one instantiation with pow2 and packed
+ * as constants. */
+#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed)                                                 \
+    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
+                     int u1)                                                                        \
+    {                                                                                               \
+        for (int u = u0; u < u1; u += LANES)                                                       \
+            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed);                \
+    }
+#define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
+    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
+                     float *qy, int u0, int u1)                                                     \
+    {                                                                                               \
+        for (int u = u0; u < u1; u++)                                                               \
+            course_column(f, sf, k, qx, qy, u, packed);                                             \
+    }
+#define RETRO_SIMD_ENTRY_POINTS(isa)                                                               \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0)                                                  \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0)                                                 \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1)                                           \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1)                                          \
+    RETRO_SIMD_COURSE_STRIP(isa##_course_maps, 0)                                                  \
+    RETRO_SIMD_COURSE_STRIP(isa##_course_packed, 1)                                                \
+    /* Columns [u0, u1) of a frame retro_simd_check() accepted. */                                \
+    static void isa##_render_strip(const retro_frame *f, const retro_simd_frame *sf, float *qx,    \
+                                   float *qy, int u0, int u1)                                       \
+    {                                                                                               \
+        consts k;                                                                                   \
+        init_consts(&k, f, sf);                                                                     \
+        if (f->mode == RETRO_MODE_COURSE)                                                           \
+            (sf->cells ? isa##_course_packed : isa##_course_maps)(f, sf, &k, qx, qy, u0, u1);       \
+        else if (sf->pow2_mask >= 0)                                                                \
+            (sf->cells ? isa##_exact_pow2_packed : isa##_exact_pow2)(f, sf, &k, u0, u1);            \
+        else                                                                                        \
+            (sf->cells ? isa##_exact_any_packed : isa##_exact_any)(f, sf, &k, u0, u1);              \
+    }                                                                                               \
+    void retro_strip_simd_##isa(const retro_frame *f, float *qx, float *qy, int u0, int u1)        \
+    {                                                                                               \
+        retro_simd_frame sf;                                                                        \
+        if (retro_simd_check(f, &sf))                                                               \
+            isa##_render_strip(f, &sf, qx, qy, u0, u1);                                             \
+        else                                                                                        \
+            retro_strip_ybuffer(f, qx, qy, u0, u1);                                                 \
+    }                                                                                               \
+    void retro_kernel_simd_##isa(const retro_frame *f, retro_ctx *rc)                              \
+    {                                                                                               \
+        retro_simd_frame sf;                                                                        \
+        if (!retro_simd_check(f, &sf)) {                                                            \
+            retro_kernel_ybuffer(f, rc);                                                            \
+            return;                                                                                 \
+        }                                                                                           \
+        retro_simd_use_packed(f, rc, &sf);                                                          \
+        retro_course_start(f, rc->qx, rc->qy);                                                      \
+        isa##_render_strip(f, &sf, rc->qx, rc->qy, 0, f->W);                                        \
+    }
 
 #endif

@@ -99,41 +99,36 @@ static int fly(const render_opts *o, const pattern *pt, long frames, int default
     return status;
 }
 
+/* retro fly's own options. */
+typedef struct {
+    const char *out;
+    long frames;
+} fly_args;
+
+static int fly_extra(void *user, const char *a, const char *v)
+{
+    fly_args *f = user;
+    if (!strcmp(a, "-o")) {
+        f->out = v;
+        return 1;
+    }
+    if (strcmp(a, "--frames"))
+        return 0;
+    if (cli_int(v, 1, MAX_FRAMES, &f->frames))
+        return cli_error("fly", "bad frame count '%s' (1..%d)", v, MAX_FRAMES);
+    return 1;
+}
+
 int cmd_fly(int argc, char **argv)
 {
-    const char *out = NULL;
-    long frames = 0;
+    fly_args fa = {NULL, 0};
     render_opts o;
     render_opts_init(&o);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            help();
-            return 0;
-        }
-        if (a[0] != '-') {
-            if (o.map)
-                return cli_error("fly", "more than one SCENE: '%s' and '%s'", o.map, a);
-            o.map = a;
-            continue;
-        }
-        if (!(v = cli_value(argc, argv, &i)))
-            return cli_error("fly", "option %s needs a value (retro fly --help)", a);
-        int r = render_opt("fly", &o, a, v);
-        if (r == CLI_EBADINPUT)
-            return r;
-        if (r)
-            continue;
-        if (!strcmp(a, "-o"))
-            out = v;
-        else if (!strcmp(a, "--frames")) {
-            if (cli_int(v, 1, MAX_FRAMES, &frames))
-                return cli_error("fly", "bad frame count '%s' (1..%d)", v, MAX_FRAMES);
-        } else
-            return cli_error("fly", "unknown option '%s' (retro fly --help)", a);
-    }
-    if (!o.map)
-        return cli_error("fly", "no SCENE given (retro fly --help)");
+    int r = render_args("fly", "SCENE", argc, argv, &o, fly_extra, &fa, help);
+    if (r)
+        return r == 1 ? 0 : r;
+    const char *out = fa.out;
+    long frames = fa.frames;
     if (!is_scene_file(o.map))
         return cli_error("fly", "'%s' is not a scene file (NAME.scene)", o.map);
     char def[2048];

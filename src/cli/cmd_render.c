@@ -31,37 +31,22 @@ static void help(void)
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n");
 }
 
+static int render_extra(void *user, const char *a, const char *v)
+{
+    if (strcmp(a, "-o"))
+        return 0;
+    *(const char **)user = v;
+    return 1;
+}
+
 int cmd_render(int argc, char **argv)
 {
     const char *out_path = NULL;
     render_opts o;
     render_opts_init(&o);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            help();
-            return 0;
-        }
-        if (a[0] != '-') {
-            if (o.map)
-                return cli_error("render", "more than one MAP: '%s' and '%s'", o.map, a);
-            o.map = a;
-            continue;
-        }
-        if (!(v = cli_value(argc, argv, &i)))
-            return cli_error("render", "option %s needs a value (retro render --help)", a);
-        int r = render_opt("render", &o, a, v);
-        if (r == CLI_EBADINPUT)
-            return r;
-        if (r)
-            continue;
-        if (!strcmp(a, "-o"))
-            out_path = v;
-        else
-            return cli_error("render", "unknown option '%s' (retro render --help)", a);
-    }
-    if (!o.map)
-        return cli_error("render", "no MAP given (retro render --help)");
+    int r = render_args("render", "MAP", argc, argv, &o, render_extra, &out_path, help);
+    if (r)
+        return r == 1 ? 0 : r;
     if (!out_path)
         return cli_error("render", "no output given: -o OUT.ppm or -o OUT.png");
 

@@ -68,3 +68,33 @@ int render_opt(const char *cmd, render_opts *o, const char *a, const char *v)
         return 0;
     return 1;
 }
+
+int render_args(const char *cmd, const char *what, int argc, char **argv, render_opts *o,
+                int (*extra)(void *user, const char *a, const char *v), void *user, void (*help)(void))
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            help();
+            return 1;
+        }
+        if (a[0] != '-') {
+            if (o->map)
+                return cli_error(cmd, "more than one %s: '%s' and '%s'", what, o->map, a);
+            o->map = a;
+            continue;
+        }
+        if (!(v = cli_value(argc, argv, &i)))
+            return cli_error(cmd, "option %s needs a value (retro %s --help)", a, cmd);
+        int r = render_opt(cmd, o, a, v);
+        if (r == 0)
+            r = extra(user, a, v);
+        if (r == CLI_EBADINPUT)
+            return r;
+        if (r == 0)
+            return cli_error(cmd, "unknown option '%s' (retro %s --help)", a, cmd);
+    }
+    if (!o->map)
+        return cli_error(cmd, "no %s given (retro %s --help)", what, cmd);
+    return 0;
+}
