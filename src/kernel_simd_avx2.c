@@ -192,10 +192,25 @@ sample(const retro_frame *f, const retro_simd_frame *sf, const consts *k, __m256
     return heights(f, sf, k, i, j, at, packed);
 }
 
+/* Fog toward the sky by weight F/256 (docs/EFFECTS.md) on every lane: R|B and G in 16-bit
+ * halves, x*(256-F) + s*F + 128 stays below 2^16, so 16-bit products are exact and the bytes
+ * equal retro_fog()'s. */
+static inline __m256i fog_colours(__m256i c, int F, uint32_t sky)
+{
+    const __m256i low = _mm256_set1_epi32(0x00ff00ff), byte = _mm256_set1_epi32(0xff);
+    const __m256i wc = _mm256_set1_epi16((short)(256 - F)), ws = _mm256_set1_epi16((short)F);
+    const __m256i half = _mm256_set1_epi16(128);
+    __m256i rb = _mm256_and_si256(_mm256_srli_epi32(c, 8), low), g = _mm256_and_si256(_mm256_srli_epi32(c, 16), byte);
+    __m256i srb = _mm256_set1_epi32((int)((sky >> 8) & 0x00ff00ffu)), sg = _mm256_set1_epi32((int)((sky >> 16) & 0xffu));
+    rb = _mm256_srli_epi16(_mm256_add_epi16(_mm256_add_epi16(_mm256_mullo_epi16(rb, wc), _mm256_mullo_epi16(srb, ws)), half), 8);
+    g = _mm256_srli_epi16(_mm256_add_epi16(_mm256_add_epi16(_mm256_mullo_epi16(g, wc), _mm256_mullo_epi16(sg, ws)), half), 8);
+    return _mm256_or_si256(_mm256_slli_epi32(rb, 8), _mm256_slli_epi32(g, 16));
+}
+
 /* Columns u0..u0+n-1 (n <= 8), front to back, as in simd-avx512. Lanes past n start full. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed)
+            const int pow2, const int packed, const int fog)
 {
     __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
     __m256 rx = _mm256_maskload_ps(f->rx + u0, live), ry = _mm256_maskload_ps(f->ry + u0, live);
@@ -212,7 +227,8 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
             /* Lanes that do not rise must not widen the rows; v >= 0, so 0 leaves them out. */
             int lo = hmin(_mm256_blendv_epi8(_mm256_set1_epi32(INT_MAX), y, up)) + 1;
             int hi = hmax(_mm256_and_si256(v, up));
-            paint_rows(f, u0, lo, hi, y, v, colours(f, at_d, packed));
+            __m256i c = colours(f, at_d, packed);
+            paint_rows(f, u0, lo, hi, y, v, fog ? fog_colours(c, f->fog[d], f->sky) : c);
             y = _mm256_max_epi32(y, v);
         }
     }

@@ -232,11 +232,26 @@ sample(const retro_frame *f, const retro_simd_frame *sf, const consts *k, __m512
     return heights(f, sf, k, i, j, at, packed);
 }
 
+/* Fog toward the sky by weight F/256 (docs/EFFECTS.md) on every lane: R|B and G in 16-bit
+ * halves, x*(256-F) + s*F + 128 stays below 2^16, so 16-bit products are exact and the bytes
+ * equal retro_fog()'s. */
+static inline __m512i fog_colours(__m512i c, int F, uint32_t sky)
+{
+    const __m512i low = _mm512_set1_epi32(0x00ff00ff), byte = _mm512_set1_epi32(0xff);
+    const __m512i wc = _mm512_set1_epi16((short)(256 - F)), ws = _mm512_set1_epi16((short)F);
+    const __m512i half = _mm512_set1_epi16(128);
+    __m512i rb = _mm512_and_si512(_mm512_srli_epi32(c, 8), low), g = _mm512_and_si512(_mm512_srli_epi32(c, 16), byte);
+    __m512i srb = _mm512_set1_epi32((int)((sky >> 8) & 0x00ff00ffu)), sg = _mm512_set1_epi32((int)((sky >> 16) & 0xffu));
+    rb = _mm512_srli_epi16(_mm512_add_epi16(_mm512_add_epi16(_mm512_mullo_epi16(rb, wc), _mm512_mullo_epi16(srb, ws)), half), 8);
+    g = _mm512_srli_epi16(_mm512_add_epi16(_mm512_add_epi16(_mm512_mullo_epi16(g, wc), _mm512_mullo_epi16(sg, ws)), half), 8);
+    return _mm512_or_si512(_mm512_slli_epi32(rb, 8), _mm512_slli_epi32(g, 16));
+}
+
 /* Columns u0..u0+n-1 (n <= 16), front to back: the design note's mode exact. Lanes past n
  * start full (y = H), so they neither paint nor hold the group back. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed)
+            const int pow2, const int packed, const int fog)
 {
     __mmask16 live = (__mmask16)((1u << n) - 1);
     __m512 rx = _mm512_maskz_loadu_ps(live, f->rx + u0), ry = _mm512_maskz_loadu_ps(live, f->ry + u0);
@@ -253,7 +268,8 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
         __mmask16 up = _mm512_cmpgt_epi32_mask(v, y);
         if (up) {
             int lo = _mm512_mask_reduce_min_epi32(up, y) + 1, hi = _mm512_mask_reduce_max_epi32(up, v);
-            paint_rows(f, u0, lo, hi, y, v, colours(f, at_d, up, packed));
+            __m512i c = colours(f, at_d, up, packed);
+            paint_rows(f, u0, lo, hi, y, v, fog ? fog_colours(c, f->fog[d], f->sky) : c);
             y = _mm512_max_epi32(y, v);
         }
     }

@@ -179,7 +179,7 @@ sample(const retro_frame *f, const retro_simd_frame *sf, const consts *k, __m128
 /* Columns u0..u0+n-1 (n <= 4), front to back, as in simd-avx512. Lanes past n start full. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed)
+            const int pow2, const int packed, const int fog)
 {
     float rxs[LANES] = {0}, rys[LANES] = {0};
     for (int l = 0; l < n; l++) {
@@ -205,7 +205,8 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
             _mm_storeu_si128((__m128i *)as, at_d);
             for (; up; up &= up - 1) {
                 int l = __builtin_ctz((unsigned)up);
-                retro_simd_span(f, u0 + l, ys[l], vs[l], colour_of(f, as[l], packed));
+                uint32_t c = colour_of(f, as[l], packed);
+                retro_simd_span(f, u0 + l, ys[l], vs[l], fog ? retro_fog(c, f->sky, f->fog[d]) : c);
             }
             y = max_epi32(y, v);
         }

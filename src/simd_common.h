@@ -9,6 +9,7 @@
 
 #include "retro.h"
 #include "retro_internal.h"
+#include "retro_scene.h"
 
 /* The packed map is tiled: 4x4 cells of 4 bytes fill one 64-byte line, so the 16 columns of a
  * vector, which sample along a line across the view, and the next distances, which move along
@@ -46,7 +47,7 @@ typedef struct retro_simd_frame {
 /* Fills sf (cells = f->packed: the maps themselves unless a threaded kernel offered its
  * context's packed map) and returns 1 when the vector path is
  * exact for f; returns 0 when the caller must use the scalar y-buffer instead: a mode other
- * than exact and course, per-sample effects, a camera height near INT_MIN, or in mode course
+ * than exact and course, per-sample effects other than fog, a camera height near INT_MIN, or in mode course
  * a position so far out that fmodf needs more than float. Touches no context, so strips of
  * threaded kernels can call it. */
 int retro_simd_check(const retro_frame *f, retro_simd_frame *sf);
@@ -87,14 +88,15 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
 /* The strip loops and the two entry points every SIMD file shares, expanded at the end of
  * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
  * are that file's own. The names it makes carry the ISA, so that the files concatenated into
- * one (the submission) do not collide. Each loop is one instantiation with pow2 and packed
- * as constants. */
-#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed)                                                 \
+ * one (the submission) do not collide. Each loop is one instantiation with pow2, packed and
+ * fog (docs/EFFECTS.md: the one per-sample effect the vector kernels render; in mode exact a
+ * group's lanes share their distance, so its weight is one scalar) as constants. */
+#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed, fog)                                            \
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
                      int u1)                                                                        \
     {                                                                                               \
         for (int u = u0; u < u1; u += LANES)                                                       \
-            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed);                \
+            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog);           \
     }
 #define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
@@ -104,10 +106,14 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
             course_column(f, sf, k, qx, qy, u, packed);                                             \
     }
 #define RETRO_SIMD_ENTRY_POINTS(isa)                                                               \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0)                                                  \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0)                                                 \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1)                                           \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1)                                          \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0, 0)                                               \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0, 0)                                              \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1, 0)                                        \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1, 0)                                       \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_any, 0, 0, 1)                                                 \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2, 1, 0, 1)                                                \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_any_packed, 0, 1, 1)                                          \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2_packed, 1, 1, 1)                                         \
     RETRO_SIMD_COURSE_STRIP(isa##_course_maps, 0)                                                  \
     RETRO_SIMD_COURSE_STRIP(isa##_course_packed, 1)                                                \
     /* Columns [u0, u1) of a frame retro_simd_check() accepted. */                                \
@@ -118,7 +124,12 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
         init_consts(&k, f, sf);                                                                     \
         if (f->mode == RETRO_MODE_COURSE)                                                           \
             (sf->cells ? isa##_course_packed : isa##_course_maps)(f, sf, &k, qx, qy, u0, u1);       \
-        else if (sf->pow2_mask >= 0)                                                                \
+        else if (f->fx & RETRO_FX_FOG) {                                                            \
+            if (sf->pow2_mask >= 0)                                                                 \
+                (sf->cells ? isa##_fog_pow2_packed : isa##_fog_pow2)(f, sf, &k, u0, u1);            \
+            else                                                                                    \
+                (sf->cells ? isa##_fog_any_packed : isa##_fog_any)(f, sf, &k, u0, u1);              \
+        } else if (sf->pow2_mask >= 0)                                                              \
             (sf->cells ? isa##_exact_pow2_packed : isa##_exact_pow2)(f, sf, &k, u0, u1);            \
         else                                                                                        \
             (sf->cells ? isa##_exact_any_packed : isa##_exact_any)(f, sf, &k, u0, u1);              \
@@ -148,14 +159,15 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
 /* The strip loops and the two entry points every SIMD file shares, expanded at the end of
  * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
  * are that file's own. The names it makes carry the ISA, so that the files concatenated into
- * one (the submission) do not collide. Each loop is one instantiation with pow2 and packed
- * as constants. */
-#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed)                                                 \
+ * one (the submission) do not collide. Each loop is one instantiation with pow2, packed and
+ * fog (docs/EFFECTS.md: the one per-sample effect the vector kernels render; in mode exact a
+ * group's lanes share their distance, so its weight is one scalar) as constants. */
+#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed, fog)                                            \
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
                      int u1)                                                                        \
     {                                                                                               \
         for (int u = u0; u < u1; u += LANES)                                                       \
-            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed);                \
+            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog);           \
     }
 #define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
@@ -165,10 +177,14 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
             course_column(f, sf, k, qx, qy, u, packed);                                             \
     }
 #define RETRO_SIMD_ENTRY_POINTS(isa)                                                               \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0)                                                  \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0)                                                 \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1)                                           \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1)                                          \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0, 0)                                               \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0, 0)                                              \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1, 0)                                        \
+    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1, 0)                                       \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_any, 0, 0, 1)                                                 \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2, 1, 0, 1)                                                \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_any_packed, 0, 1, 1)                                          \
+    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2_packed, 1, 1, 1)                                         \
     RETRO_SIMD_COURSE_STRIP(isa##_course_maps, 0)                                                  \
     RETRO_SIMD_COURSE_STRIP(isa##_course_packed, 1)                                                \
     /* Columns [u0, u1) of a frame retro_simd_check() accepted. */                                \
@@ -179,7 +195,12 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
         init_consts(&k, f, sf);                                                                     \
         if (f->mode == RETRO_MODE_COURSE)                                                           \
             (sf->cells ? isa##_course_packed : isa##_course_maps)(f, sf, &k, qx, qy, u0, u1);       \
-        else if (sf->pow2_mask >= 0)                                                                \
+        else if (f->fx & RETRO_FX_FOG) {                                                            \
+            if (sf->pow2_mask >= 0)                                                                 \
+                (sf->cells ? isa##_fog_pow2_packed : isa##_fog_pow2)(f, sf, &k, u0, u1);            \
+            else                                                                                    \
+                (sf->cells ? isa##_fog_any_packed : isa##_fog_any)(f, sf, &k, u0, u1);              \
+        } else if (sf->pow2_mask >= 0)                                                              \
             (sf->cells ? isa##_exact_pow2_packed : isa##_exact_pow2)(f, sf, &k, u0, u1);            \
         else                                                                                        \
             (sf->cells ? isa##_exact_any_packed : isa##_exact_any)(f, sf, &k, u0, u1);              \

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "simd_common.h"
+#include "retro_scene.h"
 
 /* Packs the maps into rc->simd_cells; returns 0 if a colour has a non-zero low byte (the
  * packing would lose it) or memory is short. */
@@ -52,7 +53,7 @@ static int course_in_bound(const retro_frame *f)
 
 int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
 {
-    if ((f->mode != RETRO_MODE_EXACT && f->mode != RETRO_MODE_COURSE) || f->fx)
+    if ((f->mode != RETRO_MODE_EXACT && f->mode != RETRO_MODE_COURSE) || (f->fx & ~RETRO_FX_FOG))
         return 0;
     /* The vector path converts h - height from int32; below this bound h - height exceeds
      * INT_MAX for h = 255, and only the scalar path rounds the 64-bit difference once. */
