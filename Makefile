@@ -26,7 +26,7 @@ LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
 LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
 CLI_SRC  := $(wildcard src/cli/*.c)
-TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c
+TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(wildcard src/kernel_*.c)
