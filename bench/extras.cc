@@ -170,8 +170,9 @@ static void effects_table(std::ostream &o, const BenchPlan &plan)
     const retro_kernel *yb = retro_kernel_find("ybuffer");
     double yb_none = ms_of(find(plan, GROUP_EFFECTS, s, "none", yb));
     o << "\n### What each effect costs (mode exact, " << s->name << ", " << plan.W << "×" << plan.H << ", D "
-      << plan.D << ")\n\nmedian ms/frame; cost = against the same kernel with no effect. Baked effects "
-         "(shade, water, morph) are paid once per change of their inputs, not per frame.\n\n"
+      << plan.D << ")\n\nmedian ms/frame; cost: ybuffer against itself with no effect, and the fastest "
+         "kernel for the effects against the fastest with none (×). Baked effects (shade, water, "
+         "morph) are paid once per change of their inputs, not per frame.\n\n"
       << "| effects | ybuffer | cost | fastest kernel for them | ms | cost |\n|---|--:|--:|---|--:|--:|\n";
     double best_none = std::nan("");
     for (int i = 0; i < n_sets; i++) {
