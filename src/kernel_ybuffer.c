@@ -45,8 +45,8 @@ static inline int span(uint32_t *out, int W, int H, int u, int y, int v, uint32_
 /* Row v of sample (u, d) and, when it rises above y, its colour; the per-sample effects of
  * docs/EFFECTS.md when asked. q is mode course's accumulated position of this column. */
 static inline __attribute__((always_inline)) int sample(const retro_frame *f, const int kind, const int fog,
-                                                        const int bilinear, int u, int d, float cqx, float cqy,
-                                                        int y, uint32_t *color)
+                                                        const int bilinear, int u, int d, float fd, float kd,
+                                                        float cqx, float cqy, int y, uint32_t *color)
 {
     const int S = f->S, H = f->H;
     size_t idx;
@@ -62,11 +62,11 @@ static inline __attribute__((always_inline)) int sample(const retro_frame *f, co
         idx = retro_fixed_sample(f, u, d);
         v = retro_fixed_row(f->kd_fx[d], f->half_h_fx, H, f->height_map[idx] - f->height);
     } else {
-        const float qx = f->x0 + (float)d * f->rx[u], qy = f->y0 + (float)d * f->ry[u];
+        const float qx = f->x0 + fd * f->rx[u], qy = f->y0 + fd * f->ry[u];
         if (bilinear) {
             retro_bilerp b;
             float hf = retro_bilinear_height(f, qx, qy, &b);
-            v = retro_exact_row_f(f->kd[d], f->half_h, H, retro_bilinear_dh(hf, f->height));
+            v = retro_exact_row_f(kd, f->half_h, H, retro_bilinear_dh(hf, f->height));
             if (v > y)
                 *color = fog ? retro_fog(retro_bilinear_color(f, &b), f->sky, f->fog[d]) : retro_bilinear_color(f, &b);
             return v;
@@ -77,7 +77,13 @@ static inline __attribute__((always_inline)) int sample(const retro_frame *f, co
         } else {
             idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
         }
-        v = retro_exact_row(f->kd[d], f->half_h, H, f->height_map[idx] - f->height);
+        /* retro_exact_row's vf. For y < H, v > y exactly when vf >= y + 1 ((float)(y + 1) is
+         * exact, and the floor and the clamp are monotone), so most samples, which paint
+         * nothing, stop at one compare. */
+        const float vf = kd * (float)(f->height_map[idx] - f->height) + f->half_h;
+        if (!(vf >= (float)(y + 1)))
+            return y;
+        v = vf >= (float)H ? H : (int)vf;
     }
     if (v > y)
         *color = fog ? retro_fog(f->color_map[idx], f->sky, f->fog[d]) : f->color_map[idx];
@@ -118,7 +124,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
                 if (u < lo || u >= hi || *yb >= cap)
                     continue;
                 uint32_t color;
-                int v = sample(f, kind, 0, 0, u, d, x, y, *yb, &color);
+                int v = sample(f, kind, 0, 0, u, d, 0, 0, x, y, *yb, &color);
                 if (v > *yb)
                     *yb = span(out, W, H, u, *yb, v, color);
             }
@@ -126,12 +132,14 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
             qy[d] = y;
             continue;
         }
+        /* Per distance, not per sample: the loop below has registers to spare for them. */
+        const float fd = (float)d, kd = kind == KIND_TRUTH || kind == KIND_FIXED ? 0 : f->kd[d];
         for (int u = lo; u < hi; u++) {
             int *yb = &ybuf[u - c0];
             if (*yb >= cap)
                 continue;
             uint32_t color;
-            int v = sample(f, kind, fog, bilinear, u, d, 0, 0, *yb, &color);
+            int v = sample(f, kind, fog, bilinear, u, d, fd, kd, 0, 0, *yb, &color);
             if (v > *yb)
                 *yb = span(out, W, H, u, *yb, v, color);
         }
