@@ -12,14 +12,18 @@
 
 static const double NaN = std::nan("");
 
-// Four significant digits whatever the magnitude, so columns stay comparable by eye.
-static std::string ms(double v)
+std::string report_ms_cell(double v)
 {
     if (std::isnan(v))
         return "–";
     char b[32];
     std::snprintf(b, sizeof b, v < 10 ? "%.3f" : v < 100 ? "%.2f" : "%.1f", v);
     return b;
+}
+
+static std::string ms(double v)
+{
+    return report_ms_cell(v);
 }
 
 static std::string times(double v)

@@ -29,6 +29,10 @@ double report_geomean(const BenchPlan &plan, const ReportRow &row, retro_mode mo
 double report_speedup(const BenchPlan &plan, const ReportRow &row, retro_mode mode,
                       const char *base);
 
+// A table cell of ms/frame: four significant digits whatever the magnitude, so columns stay
+// comparable by eye; "–" for NaN.
+std::string report_ms_cell(double v);
+
 // "omp, 2 threads" for threaded kernels, the kernel's name otherwise.
 std::string report_label(const ReportRow &row);
 

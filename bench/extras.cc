@@ -110,15 +110,6 @@ static const BenchCase *find(const BenchPlan &plan, unsigned group, const bench_
     return nullptr;
 }
 
-static std::string cell(double ms)
-{
-    if (std::isnan(ms))
-        return "–";
-    char b[32];
-    std::snprintf(b, sizeof b, ms < 1 ? "%.3f" : ms < 10 ? "%.2f" : "%.1f", ms);
-    return b;
-}
-
 static std::string pct(double frac)
 {
     char b[32];
@@ -154,8 +145,8 @@ static void submission_table(std::ostream &o, const BenchPlan &plan)
         char ratio[32] = "–";
         if (!std::isnan(p) && !std::isnan(q))
             std::snprintf(ratio, sizeof ratio, "%.1f×", p / q);
-        o << "| " << s->name << " | " << cell(p) << " | " << cell(ms_of(naive)) << " | " << cell(ms_of(fast)) << " | "
-          << cell(q) << " | " << ratio << " |\n";
+        o << "| " << s->name << " | " << report_ms_cell(p) << " | " << report_ms_cell(ms_of(naive)) << " | " << report_ms_cell(ms_of(fast)) << " | "
+          << report_ms_cell(q) << " | " << ratio << " |\n";
     }
 }
 
@@ -190,13 +181,13 @@ static void effects_table(std::ostream &o, const BenchPlan &plan)
             std::snprintf(c2, sizeof c2, "%.2f×", m / best_none);
         std::string who = std::string(best->name) + (b && (best->flags & RETRO_KF_THREADED) ? ", " +
                           std::to_string(b->threads) + " threads" : "");
-        o << "| " << effect_sets[i].label << " | " << cell(y) << " | " << c1 << " | " << who << " | " << cell(m)
+        o << "| " << effect_sets[i].label << " | " << report_ms_cell(y) << " | " << c1 << " | " << who << " | " << report_ms_cell(m)
           << " | " << c2 << " |\n";
     }
     double off = ms_of(find(plan, GROUP_EFFECTS, s, "none", &noeffects_row));
     if (!std::isnan(off) && !std::isnan(yb_none))
-        o << "\nEffects not called for cost nothing: ybuffer renders the plain frame in " << cell(yb_none)
-          << " ms with its effect code compiled in and " << cell(off) << " ms with it compiled out ("
+        o << "\nEffects not called for cost nothing: ybuffer renders the plain frame in " << report_ms_cell(yb_none)
+          << " ms with its effect code compiled in and " << report_ms_cell(off) << " ms with it compiled out ("
           << pct(yb_none / off - 1) << ").\n";
 }
 
