@@ -134,6 +134,34 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
         }
         /* Per distance, not per sample: the loop below has registers to spare for them. */
         const float fd = (float)d, kd = kind == KIND_TRUTH || kind == KIND_FIXED ? 0 : f->kd[d];
+        if (kind == KIND_EXACT_POW2 && !fog && !bilinear) {
+            /* Two passes: every open column's vf (retro_exact_row's, the same operations) with no
+             * branch, so the map loads overlap instead of waiting behind a mispredicted paint
+             * branch, then the few that rise above their y-buffer paint. 27% faster on a view
+             * where no column stops early (alpine), 10% on islands (2026-11-22). The cell index
+             * is j << log2 S | i: S is a power of two here. */
+            const int mask = f->S - 1, shift = __builtin_ctz((unsigned)f->S);
+            const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
+            const int64_t height = f->height;
+            const uint8_t *hm = f->height_map;
+            float vfs[CHUNK];
+            uint32_t cell[CHUNK];
+            for (int u = lo; u < hi; u++) {
+                const float px = x0 + fd * f->rx[u], py = y0 + fd * f->ry[u];
+                const uint32_t idx = (uint32_t)(retro_floor(py) & mask) << shift | (uint32_t)(retro_floor(px) & mask);
+                cell[u - c0] = idx;
+                vfs[u - c0] = kd * (float)(hm[idx] - height) + half_h;
+            }
+            for (int u = lo; u < hi; u++) {
+                int *yb = &ybuf[u - c0];
+                const float vf = vfs[u - c0];
+                if (*yb >= cap || !(vf >= (float)(*yb + 1)))
+                    continue;
+                int v = vf >= (float)H ? H : (int)vf;
+                *yb = span(out, W, H, u, *yb, v, f->color_map[cell[u - c0]]);
+            }
+            continue;
+        }
         for (int u = lo; u < hi; u++) {
             int *yb = &ybuf[u - c0];
             if (*yb >= cap)

@@ -39,10 +39,11 @@ static void check(const retro_kernel *k, retro_mode mode, const retro_map *m, co
     free(counts);
 }
 
-Test(write_once, every_pixel_exactly_once)
+/* Both map size classes: 200 takes the general wrap, 64 the power-of-two paths. */
+static void every_pixel_on(const char *map)
 {
     retro_map m;
-    test_map("test/alpine-200", &m);
+    test_map(map, &m);
     struct { int W, H, D, z, angle; float x, y; } cases[] = {
         {160, 120, 300, 120, 30, 50.5f, 70.25f}, {1, 1, 800, 100, 0, 3, 3}, {64, 1, 100, 100, 90, 1, 1},
         {1, 64, 100, 100, 180, 1, 1},           {33, 17, 0, 100, 0, 5, 5},  {33, 17, 2, 100, 0, 5, 5},
@@ -65,6 +66,9 @@ Test(write_once, every_pixel_exactly_once)
     cr_assert(checked >= 1, "no write-once kernel was checked");
     retro_map_free(&m);
 }
+
+Test(write_once, every_pixel_exactly_once) { every_pixel_on("test/alpine-200"); }
+Test(write_once, every_pixel_exactly_once_pow2) { every_pixel_on("test/ramp-64"); }
 
 /* The counter itself must catch a double write: naive paints the sky and then terrain. */
 Test(write_once, counter_catches_the_painter)
