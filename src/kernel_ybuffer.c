@@ -3,7 +3,7 @@
  * column above its last sample is sky, so every pixel of out is written exactly once and no
  * sky pre-fill is needed.
  *
- * Traversal: chunks of up to CHUNK adjacent columns, distance-outer inside a chunk. At one
+ * Traversal: chunks of up to CHUNK (256) adjacent columns, distance-outer inside a chunk. At one
  * distance the chunk's samples lie next to each other on the map, and their spans land on
  * the same rows of out, so reads and writes stay within a few cache lines and pages, where
  * walking one column's ray to the end strides across a row of the map per sample. With the
@@ -26,7 +26,7 @@
 #include "retro_internal.h"
 #include "retro_scene.h"
 
-enum { CHUNK = 128 };
+enum { CHUNK = 256 };
 
 /* What one instantiation of chunk() computes. */
 enum { KIND_EXACT, KIND_EXACT_POW2, KIND_LOD, KIND_TRUTH, KIND_FIXED, KIND_COURSE };
