@@ -150,12 +150,5 @@ bool write_charts_gp(const std::string &path, const BenchPlan &plan, const RunCo
                         std::to_string(plan.H),
                     "distance D, samples per column (log scale)");
     }
-    std::ofstream f(path);
-    f << o.str();
-    f.close();
-    if (!f) {
-        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
-        return false;
-    }
-    return true;
+    return report_write_file(path, o.str());
 }

@@ -12,6 +12,21 @@
 
 static const double NaN = std::nan("");
 
+bool report_write_file(const std::string &path, const std::string &text)
+{
+    // Through a temporary file renamed into place: a failed run leaves the previous report.
+    const std::string tmp = path + ".tmp";
+    std::ofstream f(tmp);
+    f << text;
+    f.close();
+    if (!f || std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+        return false;
+    }
+    return true;
+}
+
 std::string report_ms_cell(double v)
 {
     if (std::isnan(v))
@@ -186,12 +201,5 @@ bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunCon
     o << "\n![speedup over naive](bench-speedup.svg)\n"
       << "![ms/frame against resolution](bench-resolution.svg)\n"
       << "![ms/frame against distance](bench-distance.svg)\n";
-    std::ofstream f(path);
-    f << o.str();
-    f.close();
-    if (!f) {
-        std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
-        return false;
-    }
-    return true;
+    return report_write_file(path, o.str());
 }

@@ -29,6 +29,9 @@ double report_geomean(const BenchPlan &plan, const ReportRow &row, retro_mode mo
 double report_speedup(const BenchPlan &plan, const ReportRow &row, retro_mode mode,
                       const char *base);
 
+// Writes text to path through a temporary file; false (after a message) when it cannot.
+bool report_write_file(const std::string &path, const std::string &text);
+
 // A table cell of ms/frame: four significant digits whatever the magnitude, so columns stay
 // comparable by eye; "–" for NaN.
 std::string report_ms_cell(double v);
