@@ -2,6 +2,7 @@
 // then the plots. The terminal is chosen by whoever runs it (scripts/bench.sh), so the same
 // script yields SVG and, where gnuplot has it, PNG.
 #include "bench_report.h"
+#include "busy.h"
 
 #include <algorithm>
 #include <array>
@@ -30,7 +31,21 @@ static std::string quoted(const std::string &s)
     return q + "\"";
 }
 
-static void speedup_chart(std::ostream &o, const BenchPlan &plan)
+// The chart carries the same warning as the top of BENCH.md.
+static std::string noisy_note(const BenchPlan &plan, const RunContext &ctx)
+{
+    int n = report_noisy_rows(plan);
+    std::string s;
+    if (ctx.busy)
+        s += "NOISY RUN: the machine was busy when the run started";
+    if (n)
+        s += std::string(s.empty() ? "NOISY RUN: " : "; ") + std::to_string(n) +
+             " rows spread over " + std::to_string(static_cast<int>(NOISY_CV * 100)) +
+             "% (marked noisy)";
+    return s;
+}
+
+static void speedup_chart(std::ostream &o, const BenchPlan &plan, const RunContext &ctx)
 {
     std::set<std::pair<int, int>> keys; // rows of any mode, in table order
     std::vector<retro_mode> modes;      // modes with at least one speedup
@@ -51,7 +66,7 @@ static void speedup_chart(std::ostream &o, const BenchPlan &plan)
     o << "$speedup << EOD\n";
     for (auto [k, t] : keys) {
         ReportRow r{&retro_kernels[k], t};
-        o << quoted(report_label(r));
+        o << quoted(report_label(r) + (report_row_noisy(plan, r) ? " (noisy)" : ""));
         for (retro_mode m : modes)
             o << " " << num(report_speedup(plan, r, m, "naive"));
         o << "\n";
@@ -61,6 +76,8 @@ static void speedup_chart(std::ostream &o, const BenchPlan &plan)
       << "set title " << quoted("Speedup over naive (geometric mean over the scenes), " +
                                 std::to_string(plan.W) + "x" + std::to_string(plan.H) +
                                 ", D " + std::to_string(plan.D))
+      << "\nset label 1 " << quoted(noisy_note(plan, ctx))
+      << " at graph 0.5, graph 0.96 center textcolor rgb 'red'"
       << "\nset ylabel 'times faster than naive (log scale, higher is better)'\n"
       << "set style data histograms\nset style histogram clustered gap 1\n"
       << "set style fill solid 0.85 border -1\nset grid ytics\n"
@@ -122,7 +139,7 @@ bool write_charts_gp(const std::string &path, const BenchPlan &plan, const RunCo
       << "if (!exists('term')) term = \"svg size 800,450 dynamic background rgb 'white'\"\n"
       << "if (!exists('ext')) ext = 'svg'\nif (!exists('out')) out = 'results'\n"
       << "eval('set terminal '.term)\nset termoption noenhanced\nset encoding utf8\n\n";
-    speedup_chart(o, plan);
+    speedup_chart(o, plan, ctx);
     if (plan.sweep_scene) {
         std::vector<std::string> labels;
         std::vector<double> xs;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench_report.h"
+#include "busy.h"
 #include "cases.h"
 #include "extras.h"
 #include "options.h"
@@ -127,6 +128,16 @@ int main(int argc, char **argv)
         return 2;
 
     context_gather(&ctx);
+    ctx.quick = quick;
+    BusyReport busy = busy_sample(1.0, ctx.cores);
+    ctx.busy = busy.busy;
+    ctx.machine = busy_sentence(busy);
+    if (busy.busy)
+        std::fprintf(stderr, "warning: the machine is %s.\nwarning: timings will be noisy; "
+                     "BENCH.md and the chart will say so. Rerun on a quiet machine to publish.\n",
+                     ctx.machine.c_str());
+    else
+        std::fprintf(stderr, "%s\n", ctx.machine.c_str());
     char note[160];
     bool pinned = pin_thread_to_cores(0, 1, note, sizeof note) == 0;
     if (!pinned)

@@ -1,5 +1,6 @@
 // BENCH.md: the run's context, then one markdown table per question a reader asks.
 #include "bench_report.h"
+#include "busy.h"
 #include "extras.h"
 
 #include <algorithm>
@@ -59,18 +60,6 @@ static std::string percent(double v)
     return b;
 }
 
-// The worst spread over the repetitions of a row's scenes: how far to trust its medians.
-static double max_cv(const BenchPlan &plan, const ReportRow &row, retro_mode mode)
-{
-    double worst = NaN;
-    for (const bench_scene *s : plan.scenes) {
-        const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, plan.W, plan.H, plan.D);
-        if (c && c->ran && c->error.empty() && !std::isnan(c->cv))
-            worst = std::isnan(worst) ? c->cv : std::max(worst, c->cv);
-    }
-    return worst;
-}
-
 static std::string kernel_cell(const ReportRow &r)
 {
     return std::string("`") + r.kernel->name + "` | " + std::to_string(r.threads);
@@ -96,7 +85,8 @@ static void matrix_table(std::ostream &o, const BenchPlan &plan, retro_mode mode
         o << " " << ms(report_geomean(plan, r, mode)) << " | "
           << times(report_speedup(plan, r, mode, "naive")) << " | "
           << times(report_speedup(plan, r, mode, "ybuffer")) << " | "
-          << percent(max_cv(plan, r, mode)) << " |\n";
+          << percent(report_max_cv(plan, r, mode))
+          << (report_max_cv(plan, r, mode) > NOISY_CV ? " ⚠" : "") << " |\n";
     }
 }
 
@@ -146,6 +136,10 @@ static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx
         o << "| filter | `" << f << "` (a partial run) |\n";
     }
     o << "| date | " << ctx.date << "; load average " << ctx.load << " at the start |\n"
+      << "| machine | " << ctx.machine << " |\n"
+      << "| settings | " << (ctx.quick ? "quick run (make bench QUICK=1): fewer, shorter "
+                                         "repetitions and sweep points; not for publishing"
+                                       : "full run") << " |\n"
       << "| commit | " << ctx.commit << " |\n"
       << "| run | " << cases_run << " cases in " << static_cast<int>(std::lround(seconds))
       << " s |\n\nTimes are the median milliseconds per frame over the repetitions (lower is "
@@ -155,7 +149,24 @@ static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx
     for (const bench_scene *s : plan.scenes)
         o << " " << s->name << (std::string(s->origin) == "course" ? " (course test pose)" : "")
           << (s == plan.scenes.back() ? "." : ",");
-    o << " Generated maps are seen from their default view.\n";
+    o << " Generated maps are seen from their default view.\n\n"
+      // Debian builds libbenchmark without NDEBUG, so its JSON says so; see below.
+      << "The JSON's `library_build_type: debug` describes Debian's libbenchmark (built "
+         "without NDEBUG), not the timed code: the timing loop is inlined from the header into "
+         "the harness, built with " << ctx.cxx << " at the harness's -O level, and each "
+         "iteration calls retro_render() in libretro, built with the C flags above. The "
+         "library's own asserts run only between timed loops.\n";
+    int noisy = report_noisy_rows(plan);
+    if (ctx.busy || noisy)
+        o << "\n> **Noisy run.**";
+    if (ctx.busy)
+        o << " The machine was busy when the run started (" << ctx.machine << ").";
+    if (noisy)
+        o << " " << noisy << (noisy == 1 ? " row has" : " rows have")
+          << " a spread over repetitions above " << static_cast<int>(NOISY_CV * 100)
+          << "% (max cv marked ⚠): its medians may be off by as much.";
+    if (ctx.busy || noisy)
+        o << " Rerun on a quiet machine before drawing conclusions.\n";
 }
 
 bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunContext &ctx,

@@ -36,6 +36,16 @@ bool report_write_file(const std::string &path, const std::string &text);
 // comparable by eye; "–" for NaN.
 std::string report_ms_cell(double v);
 
+// The largest coefficient of variation over the repetitions of the row's matrix cases; NaN if
+// none ran.
+double report_max_cv(const BenchPlan &plan, const ReportRow &row, retro_mode mode);
+
+// Rows of the mode tables whose spread exceeds NOISY_CV (busy.h), over every mode.
+int report_noisy_rows(const BenchPlan &plan);
+
+// Whether the row is noisy in any mode (the chart marks it).
+bool report_row_noisy(const BenchPlan &plan, const ReportRow &row);
+
 // "omp, 2 threads" for threaded kernels, the kernel's name otherwise.
 std::string report_label(const ReportRow &row);
 

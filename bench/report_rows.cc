@@ -1,5 +1,8 @@
 // The numbers BENCH.md and the charts share: rows, medians, geometric means, speedups.
 #include "bench_report.h"
+#include "busy.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <set>
@@ -64,4 +67,32 @@ std::string report_label(const ReportRow &row)
         return row.kernel->name;
     return std::string(row.kernel->name) + ", " + std::to_string(row.threads) +
            (row.threads == 1 ? " thread" : " threads");
+}
+
+double report_max_cv(const BenchPlan &plan, const ReportRow &row, retro_mode mode)
+{
+    double worst = NaN;
+    for (const bench_scene *s : plan.scenes) {
+        const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, plan.W, plan.H, plan.D);
+        if (c && c->ran && c->error.empty() && !std::isnan(c->cv))
+            worst = std::isnan(worst) ? c->cv : std::max(worst, c->cv);
+    }
+    return worst;
+}
+
+int report_noisy_rows(const BenchPlan &plan)
+{
+    int n = 0;
+    for (retro_mode m : plan.modes)
+        for (const ReportRow &r : report_rows(plan, GROUP_MATRIX, m))
+            n += report_max_cv(plan, r, m) > NOISY_CV;
+    return n;
+}
+
+bool report_row_noisy(const BenchPlan &plan, const ReportRow &row)
+{
+    for (retro_mode m : plan.modes)
+        if (report_max_cv(plan, row, m) > NOISY_CV)
+            return true;
+    return false;
 }

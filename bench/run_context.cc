@@ -97,4 +97,6 @@ void context_publish(const RunContext &rc)
     benchmark::AddCustomContext("retro_commit", rc.commit);
     benchmark::AddCustomContext("retro_date", rc.date);
     benchmark::AddCustomContext("retro_load", rc.load);
+    benchmark::AddCustomContext("retro_quick", rc.quick ? "true" : "false");
+    benchmark::AddCustomContext("retro_machine", rc.machine);
 }

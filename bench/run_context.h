@@ -21,6 +21,9 @@ struct RunContext {
     std::string min_time;          // --benchmark_min_time in effect, seconds
     std::string warmup;            // --benchmark_min_warmup_time in effect, seconds
     std::string filter;            // --benchmark_filter, empty when every case runs
+    bool quick = false;            // --quick: fewer, shorter repetitions, not for publishing
+    bool busy = false;             // other work was using the cores when the run started
+    std::string machine;           // busy_sentence(): what else ran, from /proc
 };
 
 // Fills everything but binding and the benchmark settings.
