@@ -10,6 +10,9 @@ SAN      ?=
 V        ?= 0
 Q        := $(if $(filter 1,$(V)),,@)
 SHARED   ?= ../shared
+# Where runs write (bench, accuracy, demo): an ignored folder. `make publish` copies a full
+# run from here into the committed results/ that the README quotes.
+RESULTS  ?= $(BUILD)/results
 
 WARN     := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wvla -Wconversion -Wno-sign-conversion
 FPFLAGS  := -ffp-contract=off -fno-math-errno
@@ -101,10 +104,10 @@ verify: $(RETRO) ## every kernel in every mode against naive, byte for byte (ful
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) verify
 
-demo: deps ## render the default scenes to results/*.png
+demo: deps ## render the default scenes to RESULTS/*.png (build/results; make publish commits them)
 	$(Q)$(MAKE) --no-print-directory $(RETRO)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
-	$(Q)sh scripts/demo.sh $(RETRO)
+	$(Q)sh scripts/demo.sh $(RETRO) $(RESULTS)
 
 # Both compilers: each instruments and optimises differently, and clang builds the omp kernel
 # on libomp. float-cast-overflow is named because gcc's -fsanitize=undefined leaves it out.
@@ -195,16 +198,25 @@ $(BENCH_BIN): $(BENCH_OBJ) $(LIB)
 	$(Q)$(CXX) $(SAN) -o $@ $(BENCH_OBJ) $(LIB) $(shell pkg-config --libs $(BENCH_PKGS)) -lpthread $(LDLIBS)
 
 .PHONY: bench
-bench: deps ## time every kernel, scene and mode: results/BENCH.md, bench.json, charts (QUICK=1)
+bench: deps ## time every kernel, scene and mode: RESULTS/BENCH.md, bench.json, charts (QUICK=1)
 	$(Q)$(MAKE) --no-print-directory $(RETRO) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
-	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) results $(BUILD)/bench-charts.gp \
+	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) $(RESULTS) $(BUILD)/bench-charts.gp \
 	  $(if $(filter-out 0,$(QUICK)),--quick) $(BENCH_ARGS)
 # --- end of benchmark block ---------------------------------------------------------------
 
-accuracy: $(RETRO) ## what accuracy costs: results/ACCURACY.md and a Pareto chart
+ACCURACY_ARGS ?=
+accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto chart
 	$(Q)sh scripts/make-maps.sh $(RETRO)
-	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) accuracy
+	$(Q)mkdir -p $(RESULTS)
+	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) accuracy -o $(RESULTS)/ACCURACY.md \
+	  --chart $(RESULTS)/accuracy-pareto.svg $(ACCURACY_ARGS)
+
+# The only target that writes the committed results/: a full (not quick) run of make bench,
+# and make accuracy and make demo if they ran, then the README's generated figures.
+.PHONY: publish
+publish: ## copy the last full run from RESULTS into results/ and refresh the README's figures
+	$(Q)sh scripts/publish.sh $(RESULTS) results README.md
 
 submission: ## the single-file course render.c (results/submission/render.c)
 	$(Q)sh scripts/make-submission.sh results/submission/render.c

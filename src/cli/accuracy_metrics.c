@@ -2,7 +2,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 #include "accuracy_metrics.h"
@@ -58,48 +57,50 @@ void acc_summary(const acc_stats *s, acc_row *r)
     r->psnr = mse > 0 ? 10 * log10(255.0 * 255.0 / mse) : INFINITY;
 }
 
-static int write_chart(const char *svg, const acc_row *rows, int n, char *err, size_t errlen)
+/* One gnuplot run for one terminal, the data inline, so nothing but the chart is written. The
+ * key sits below the plot: inside it, it covered the cheapest variants' points. */
+static int plot(const char *term, const char *out, const acc_row *rows, int n)
 {
-    char dat[512], gp[512];
-    snprintf(dat, sizeof dat, "%s.dat", svg);
-    snprintf(gp, sizeof gp, "%s.gp", svg);
-    FILE *f = fopen(dat, "w"), *g = fopen(gp, "w");
-    if (!f || !g) {
-        if (f)
-            fclose(f);
-        if (g)
-            fclose(g);
-        snprintf(err, errlen, "cannot write %s", dat);
+    FILE *g = popen("gnuplot 2>/dev/null", "w");
+    if (!g)
         return -1;
-    }
+    fprintf(g, "$d << EOD\n");
     for (int i = 0; i < n; i++) /* error axis is logarithmic: truth (0) sits at its floor */
-        fprintf(f, "\"%s\" %.4f %.6f %.4f\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
+        fprintf(g, "\"%s\" %.4f %.6f %.4f\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
                 rows[i].ms_y);
-    fclose(f);
-    fprintf(g, "set terminal svg size 800,520 dynamic background '#ffffff'\nset output '%s'\n"
+    fprintf(g, "EOD\nset terminal %s size 800,560 background rgb '#ffffff'\nset output '%s'\n"
                "set title 'What accuracy costs: time per frame against error (vs truth)'\n"
                "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
                "set ylabel 'pixels differing from truth (%%, log; truth itself plotted at 0.001)'\n"
-               "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key top right\n"
+               "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key below horizontal\n"
                "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
-               "plot '%s' using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'fastest kernel for the mode', "
-               "'' using 2:3:1 with labels offset 1,0.8 left notitle, "
-               "'' using 4:3 with points pt 5 ps 1.0 lc rgb '#d62728' title 'ybuffer (same scalar kernel for all)'\n",
-            svg, dat);
-    fclose(g);
-    char cmd[1200];
-    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", gp);
-    if (system(cmd) != 0) {
-        snprintf(err, errlen, "gnuplot failed on %s (is gnuplot-nox installed?)", gp);
+               "plot $d using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'fastest kernel for the mode', "
+               "$d using 2:3:1 with labels offset 1,0.8 left notitle, "
+               "$d using 4:3 with points pt 5 ps 1.0 lc rgb '#d62728' title 'ybuffer (same scalar kernel for all)'\n",
+            term, out);
+    return pclose(g) == 0 ? 0 : -1;
+}
+
+/* The SVG, and a PNG beside it (OUT.png for OUT.svg) where this gnuplot has a PNG terminal. */
+static int write_chart(const char *svg, const acc_row *rows, int n, char *err, size_t errlen)
+{
+    if (plot("svg dynamic", svg, rows, n)) {
+        snprintf(err, errlen, "gnuplot failed on %s (is gnuplot-nox installed?)", svg);
         return -1;
     }
+    size_t len = strlen(svg);
+    char png[600];
+    if (len < 4 || strcmp(svg + len - 4, ".svg") || len >= sizeof png)
+        return 0;
+    snprintf(png, sizeof png, "%.*s.png", (int)(len - 4), svg);
+    if (plot("pngcairo", png, rows, n) && plot("png", png, rows, n))
+        remove(png); /* gnuplot-nox builds differ: SVG only */
     return 0;
 }
 
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
                      uint64_t seed, char *err, size_t errlen)
 {
-    mkdir("results", 0755);
     if (write_chart(svg, rows, n, err, errlen))
         return -1;
     char tmp[600];
@@ -132,7 +133,8 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
                 rows[i].label, rows[i].what, rows[i].kernel, rows[i].ms, rows[i].speedup, rows[i].ms_y,
                 rows[i].speedup_y, rows[i].pixel_pct, rows[i].col_pct, rows[i].sil_mean, rows[i].sil_max, psnr);
     }
-    fprintf(f, "\n![time against error](accuracy-pareto.svg)\n");
+    const char *slash = strrchr(svg, '/'); /* the chart is linked as it sits beside the table */
+    fprintf(f, "\n![time against error](%s)\n", slash ? slash + 1 : svg);
     if (fclose(f) || rename(tmp, md)) {
         snprintf(err, errlen, "%s: cannot write", md);
         return -1;

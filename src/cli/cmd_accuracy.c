@@ -82,14 +82,15 @@ static void help(void)
            "Renders N seeded random poses (default 20) of each default scene (maps/) and course\n"
            "scene ($RETRO_SHARED/course) at 640x480, D 800, with every accuracy variant through\n"
            "the fastest kernel for its mode, compares each frame with mode truth and writes a table\n"
-           "(default results/ACCURACY.md) and a Pareto chart (default results/accuracy-pareto.svg).\n");
+           "(default ./ACCURACY.md) and a Pareto chart (default ./accuracy-pareto.svg, and a .png\n"
+           "beside it). make accuracy writes them to build/results/.\n");
 }
 
 int cmd_accuracy(int argc, char **argv)
 {
     long poses = 20;
     uint64_t seed = 1;
-    const char *out_md = "results/ACCURACY.md", *out_svg = "results/accuracy-pareto.svg";
+    const char *out_md = "ACCURACY.md", *out_svg = "accuracy-pareto.svg";
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {

@@ -1,0 +1,39 @@
+#!/bin/sh
+# make publish: copies the last full benchmark run (and the accuracy run and demo pictures, if
+# any) from the runs' folder into the committed results/, then rewrites the README's figures
+# from them. The only way results/ changes, so a quick or partial run never replaces it.
+# usage: publish.sh RUNS RESULTS README
+set -eu
+runs=$1
+dest=$2
+readme=$3
+if [ ! -f "$runs/BENCH.md" ] || [ ! -f "$runs/bench.json" ]; then
+  echo "error: no benchmark run in $runs (make bench first)" >&2
+  exit 2
+fi
+if grep -q '"retro_quick": "true"' "$runs/bench.json" || ! grep -q '^| settings | full run |' "$runs/BENCH.md"; then
+  echo "error: $runs/BENCH.md is a quick run (make bench QUICK=1): run make bench in full to publish" >&2
+  exit 2
+fi
+if grep -q '^| filter |' "$runs/BENCH.md"; then
+  echo "error: $runs/BENCH.md is a partial run (BENCH_ARGS filter): run make bench in full to publish" >&2
+  exit 2
+fi
+if grep -q '^> \*\*Noisy run' "$runs/BENCH.md"; then
+  echo "warning: $runs/BENCH.md says the run was noisy; publishing it anyway (it says so)" >&2
+fi
+mkdir -p "$dest"
+for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distance.svg \
+  bench-speedup.png bench-resolution.png bench-distance.png; do
+  [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
+done
+if [ -f "$runs/ACCURACY.md" ]; then
+  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png; do
+    [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
+  done
+fi
+for f in alpine islands canyon tide alpine-plain islands-plain canyon-plain; do
+  [ -f "$runs/$f.png" ] && cp "$runs/$f.png" "$dest/$f.png" && echo "  COPY    $dest/$f.png"
+done
+python3 scripts/readme-figures.py "$dest" "$readme"
+echo "  published; review with git diff, then commit $dest and $readme"

@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+"""Writes the README's figures from the committed run, so they cannot drift from it.
+
+usage: readme-figures.py RESULTS_DIR README.md           rewrite the generated blocks
+       readme-figures.py --check RESULTS_DIR README.md   exit 1 if a block differs from the run
+
+Each block sits between <!-- NAME:begin --> and <!-- NAME:end --> in README.md and is
+regenerated whole from RESULTS_DIR/BENCH.md (one `make bench` run) or RESULTS_DIR/ACCURACY.md
+(one `make accuracy` run). Prose inside a block draws conclusions only from that block's run.
+"""
+import math
+import re
+import sys
+
+
+def tables(md):
+    """{section title: [rows as lists of cells]} for every markdown table under a heading."""
+    out, title, rows = {}, None, None
+    for line in md.splitlines():
+        if line.startswith("#"):
+            title, rows = line.lstrip("#").strip(), None
+        elif line.startswith("|") and title is not None:
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if rows is None:
+                rows = out.setdefault(title, [])
+            if not all(re.fullmatch(r":?-+:?", c) for c in cells):
+                rows.append(cells)
+        else:
+            rows = None
+    return out
+
+
+def num(cell):
+    return float(cell.replace("×", "").replace("%", "").replace("⚠", "").strip())
+
+
+def fmt(x, unit="×"):
+    return (f"{x:.2f}" if x < 10 else f"{x:.1f}" if x < 100 else f"{x:.0f}") + unit
+
+
+def context_field(md, name):
+    m = re.search(r"^\| " + re.escape(name) + r" \| (.*) \|$", md, re.M)
+    return m.group(1) if m else "unknown"
+
+
+def bench_blocks(md, raw):
+    t = tables(md)
+    key = next((k for k in t if k.startswith("Mode exact,")), None)
+    if key is None:
+        sys.exit("readme-figures: BENCH.md has no mode exact table")
+    head, rows = t[key][0], t[key][1:]
+    scenes = head[2:head.index("geomean")]
+    byname = {}
+    for r in rows:
+        byname[(r[0].strip("`"), int(r[1]))] = r
+    blocks = {}
+    date = context_field(md, "date")
+    commit = context_field(md, "commit")
+    machine = context_field(md, "machine")
+    settings = context_field(md, "settings")
+    about = "; ".join([date, f"commit `{commit}`"] +
+                      [x for x in (settings, machine) if x != "unknown"])
+    blocks["bench:context"] = (
+        f"Figures in this section come from one `make bench` run ({about}), published by "
+        "`make publish`. The full table with every mode "
+        "and the sweeps is in [`results/BENCH.md`](results/BENCH.md)"
+        + ("; the raw numbers in `results/bench.json`." if raw else "."))
+    lines = ["| kernel | threads | " + " | ".join(scenes) + " | vs naive | vs ybuffer | max cv |",
+             "|---|--:|" + "--:|" * (len(scenes) + 3)]
+    for r in rows:
+        lines.append("| " + " | ".join(r[:2 + len(scenes)] + r[-3:]) + " |")
+    blocks["bench:exact"] = "\n".join(lines)
+
+    def ms(kernel, threads, scene):
+        r = byname.get((kernel, threads))
+        return num(r[2 + scenes.index(scene)]) if r else math.nan
+
+    def geo(xs):
+        return math.exp(sum(math.log(x) for x in xs) / len(xs))
+
+    default = [s for s in scenes if s in ("alpine", "islands", "canyon")]
+    yb = [ms("naive", 1, s) / ms("ybuffer", 1, s) for s in default]
+    simd = [k for (k, n) in byname if k.startswith("simd-")]
+    single = [k for (k, n) in byname if n == 1 and k not in ("naive",)]
+    best_simd = min(simd, key=lambda k: geo([ms(k, 1, s) for s in scenes]))
+    simd_r = [ms("ybuffer", 1, s) / ms(best_simd, 1, s) for s in scenes]
+    best1 = min(single, key=lambda k: geo([ms(k, 1, s) for s in scenes]))
+    omp_r = [ms(best1, 1, s) / ms("omp", 2, s) for s in scenes]
+    best = min(byname, key=lambda kn: geo([ms(kn[0], kn[1], s) for s in scenes]))
+    best_ms = [ms(best[0], best[1], s) for s in scenes]
+    verdict = lambda ok: "met" if ok else "**not met**"
+    tl = ["| target | measured in this run | verdict |", "|---|---|---|",
+          f"| `ybuffer` ≥ 25× `naive`, mode exact, default scenes | "
+          + ", ".join(f"{fmt(x)} on {s}" for x, s in zip(yb, default))
+          + f" | {verdict(min(yb) >= 25)} |",
+          f"| best SIMD ≥ 3× scalar `ybuffer`, single thread | `{best_simd}` {fmt(geo(simd_r))} "
+          f"({fmt(min(simd_r), '')}–{fmt(max(simd_r))} per scene) | {verdict(min(simd_r) >= 3)} |",
+          f"| `omp` on 2 cores ≥ 1.8× the best single-thread kernel | {fmt(geo(omp_r))} over "
+          f"`{best1}` ({fmt(min(omp_r), '')}–{fmt(max(omp_r))} per scene) | "
+          f"{verdict(geo(omp_r) >= 1.8)}{'' if min(omp_r) >= 1.8 else ' on average, not on every scene'} |",
+          f"| best kernel < 0.3 ms per frame, 640×480, D 800 | `{best[0]}`, {best[1]} "
+          f"thread{'s' if best[1] > 1 else ''}: {min(best_ms):.3f}–{max(best_ms):.3f} ms | "
+          f"{verdict(max(best_ms) < 0.3)} |"]
+    sub = next((v for k, v in t.items() if k.startswith("The course submission")), None)
+    if sub:
+        h = sub[0]
+        for r in sub[1:]:
+            if r[0] == "valley":
+                ratio = num(r[h.index("submission vs painter")])
+                tl.append(f"| submission ≥ 20× (goal 40×) the plain course painter at `-O3`, valley | "
+                          f"{fmt(ratio)} ({r[h.index('submission (-O3)')]} ms against "
+                          f"{r[h.index('course painter (-O3)')]} ms) | {verdict(ratio >= 20)}"
+                          f"{', goal met' if ratio >= 40 else ''} |")
+    blocks["bench:targets"] = "\n".join(tl)
+    return blocks
+
+
+def accuracy_blocks(md):
+    t = tables(md)
+    key = next(iter(t), None)
+    if key is None:
+        sys.exit("readme-figures: ACCURACY.md has no table")
+    head, rows = t[key][0], t[key][1:]
+    col = {name: i for i, name in enumerate(head)}
+    v = {r[0]: r for r in rows}
+    m = re.search(r"Measured (\S+) by `make accuracy`: (\d+) seeded random poses", md)
+    when, poses = (m.group(1), m.group(2)) if m else ("unknown", "?")
+    out = {}
+    out["accuracy:context"] = (
+        f"`retro accuracy` rendered {poses} seeded random poses of the six scenes with each "
+        f"variant and compared each frame with mode `truth`, on {when} (one `make accuracy` run, "
+        "published by `make publish`; [`results/ACCURACY.md`](results/ACCURACY.md)). Definitions "
+        "are in [`docs/ACCURACY.md`](docs/ACCURACY.md). Its times come from its own run, so "
+        "compare them with each other, not with the benchmark's.")
+    lines = ["| " + " | ".join(head) + " |", "|---|---|---|" + "---:|" * (len(head) - 3)]
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    out["accuracy:table"] = "\n".join(lines)
+
+    def get(variant, name):
+        return num(v[variant][col[name]]) if variant in v else math.nan
+
+    ybms = "ybuffer ms/frame"
+    fms = "ms/frame"
+    px = "pixels differ"
+    cols = "silhouette columns differ"
+    say = []
+    tr = get("truth", ybms) / get("exact", ybms)
+    say.append(f"- **binary64 against binary32.** On `ybuffer` truth takes {fmt(tr)} the time of "
+               f"exact; with the fastest kernel for each mode, {fmt(get('truth', fms) / get('exact', fms))}. "
+               f"Binary32 differs from truth on {get('exact', px):.3f}% of pixels and "
+               f"{get('exact', cols):.2f}% of silhouette columns.")
+    if "fixed" in v:
+        say.append(f"- **Integer fixed point** takes {fmt(get('fixed', ybms) / get('exact', ybms))} "
+                   f"the time of binary32 on `ybuffer` and differs from truth on "
+                   f"{get('fixed', px):.3f}% of pixels (binary32: {get('exact', px):.3f}%).")
+    if "course" in v:
+        say.append(f"- **The course's arithmetic** takes {fmt(get('course', ybms) / get('exact', ybms))} "
+                   f"the time of exact on `ybuffer` and changes {get('course', px):.1f}% of the pixels.")
+    for lod in ("lod 0.02",):
+        if lod in v:
+            say.append(f"- **A distance step of 2% of the distance** ({lod}) runs "
+                       f"{fmt(get('exact', ybms) / get(lod, ybms))} as fast as exact on `ybuffer` and moves "
+                       f"the silhouette in {get(lod, cols):.1f}% of the columns.")
+    for peer in (k for k in v if k.startswith("peer")):
+        say.append(f"- **The classic demo's algorithm** ({peer}, a peer, not a mode of retro) runs "
+                   f"{fmt(get('exact', ybms) / get(peer, ybms))} as fast as exact on `ybuffer`'s time and "
+                   f"moves the silhouette in {get(peer, cols):.1f}% of the columns.")
+    if "half" in v:
+        say.append(f"- **Half resolution** runs {fmt(get('exact', fms) / get('half', fms))} as fast "
+                   f"with the fastest kernel, with {get('half', cols):.1f}% of silhouette columns moved.")
+    scalar_best = min(get(k, ybms) for k in v)
+    say.append(f"- **Fastest kernel against cheaper arithmetic.** Exact with the fastest kernel takes "
+               f"{get('exact', fms):.3f} ms; the cheapest variant on scalar `ybuffer` takes "
+               f"{scalar_best:.3f} ms.")
+    out["accuracy:prose"] = "\n".join(say)
+    return out
+
+
+def replace(readme, blocks):
+    for name, body in blocks.items():
+        pat = re.compile(r"(<!-- " + re.escape(name) + r":begin -->\n).*?(<!-- "
+                         + re.escape(name) + r":end -->)", re.S)
+        if not pat.search(readme):
+            sys.exit(f"readme-figures: README has no block {name}")
+        readme = pat.sub(lambda m: m.group(1) + body + "\n" + m.group(2), readme)
+    return readme
+
+
+def main(argv):
+    check = argv[1:2] == ["--check"]
+    args = argv[2:] if check else argv[1:]
+    if len(args) != 2:
+        sys.exit(__doc__)
+    results, path = args
+    import os
+    blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(),
+                          os.path.exists(f"{results}/bench.json"))
+    blocks.update(accuracy_blocks(open(f"{results}/ACCURACY.md", encoding="utf-8").read()))
+    old = open(path, encoding="utf-8").read()
+    new = replace(old, blocks)
+    if check:
+        if new != old:
+            import difflib
+            sys.stdout.writelines(difflib.unified_diff(old.splitlines(True), new.splitlines(True),
+                                                       path, "from " + results))
+            print(f"FAIL: {path}'s figures differ from the run in {results} "
+                  "(python3 scripts/readme-figures.py results README.md rewrites them)")
+            return 1
+        print(f"ok: every generated block of {path} matches {results}")
+        return 0
+    if new != old:
+        with open(path + ".tmp", "w", encoding="utf-8") as f:
+            f.write(new)
+        import os
+        os.replace(path + ".tmp", path)
+        print(f"  GEN     {path} (figures from {results})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
