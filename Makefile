@@ -28,7 +28,10 @@ TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
 LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
 LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
-CLI_SRC  := $(wildcard src/cli/*.c)
+# Peer algorithms (src/peer/): others' traversals timed and measured beside the kernels, in the
+# CLI and the benchmark only, never in the library or its kernel table.
+PEER_SRC := $(wildcard src/peer/*.c)
+CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
@@ -158,7 +161,7 @@ fuzz: fuzz-build ## run every fuzz target for FUZZ_TIME seconds (default 60) fro
 # --- benchmark (bench/, scripts/bench.sh): the only C++, google-benchmark and hwloc -------
 BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
-BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) \
+BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) $(PEER_SRC:%.c=$(BUILD)/%.o) \
               $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
 SUBMISSION_SRC := $(wildcard src/*.c src/*.h include/*.h src/submission/*.c) scripts/make-submission.sh
 QUICK      ?=

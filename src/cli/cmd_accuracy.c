@@ -9,6 +9,7 @@
 
 #include "accuracy_metrics.h"
 #include "cli.h"
+#include "peer/peer_voxelspace.h"
 #include "retro.h"
 #include "retro_maps.h"
 
@@ -21,6 +22,7 @@ typedef struct {
     retro_mode mode;
     float lod;
     int half; /* mode exact at half resolution, scaled up */
+    int peer; /* the classic demo's traversal (src/peer/), not a retro kernel */
     const char *what;
     acc_stats stats;
     double *ms;   /* per pose, fastest kernel for the mode */
@@ -49,9 +51,13 @@ static double render_variant(retro_ctx *rc, const retro_kernel *k, variant *v, c
 {
     int w = v->half ? (W + 1) / 2 : W, h = v->half ? (H + 1) / 2 : H;
     ctx_t c = {w, h, m->size, D, SKY, m->height, m->color, v->half ? small : out};
+    static int peer_ybuf[W]; /* the peer's y-buffer: scratch allocated once */
     rc->lod = v->lod;
     double t0 = now_ms();
-    retro_render(rc, k, v->mode, p, &c);
+    if (v->peer)
+        peer_voxelspace_render(p, &c, PEER_VOXELSPACE_DZ_GROWTH, peer_ybuf);
+    else
+        retro_render(rc, k, v->mode, p, &c);
     double t = now_ms() - t0;
     if (v->half)
         for (int y = 0; y < H; y++)
@@ -81,7 +87,8 @@ static void help(void)
     printf("usage: retro accuracy [--poses N] [--seed S] [-o OUT.md] [--chart OUT.svg]\n\n"
            "Renders N seeded random poses (default 20) of each default scene (maps/) and course\n"
            "scene ($RETRO_SHARED/course) at 640x480, D 800, with every accuracy variant through\n"
-           "the fastest kernel for its mode, compares each frame with mode truth and writes a table\n"
+           "the fastest kernel for its mode, and the classic demo's algorithm as a peer (its own\n"
+           "code, src/peer/), compares each frame with mode truth and writes a table\n"
            "(default ./ACCURACY.md) and a Pareto chart (default ./accuracy-pareto.svg, and a .png\n"
            "beside it). make accuracy writes them to build/results/.\n");
 }
@@ -122,6 +129,8 @@ int cmd_accuracy(int argc, char **argv)
         {.label = "lod 0.02", .mode = RETRO_MODE_LOD, .lod = 0.02f, .half = 0, .what = "step max(1, d/50)"},
         {.label = "lod 0.05", .mode = RETRO_MODE_LOD, .lod = 0.05f, .half = 0, .what = "step max(1, d/20)"},
         {.label = "half", .mode = RETRO_MODE_EXACT, .lod = 0, .half = 1, .what = "exact at 320x240, scaled 2x"},
+        {.label = "peer: classic demo", .mode = RETRO_MODE_EXACT, .peer = 1,
+         .what = "s-macke's VoxelSpace traversal: step 1, +0.2 per distance (a peer, not a retro mode)"},
     };
     const int nv = (int)(sizeof vars / sizeof vars[0]);
     const char *shared = getenv("RETRO_SHARED") ? getenv("RETRO_SHARED") : "../shared";
@@ -181,7 +190,7 @@ int cmd_accuracy(int argc, char **argv)
         for (int k = 0; k < nv; k++) {
             qsort(vars[k].ms, (size_t)vars[k].n, sizeof(double), cmp_double);
             qsort(vars[k].ms_y, (size_t)vars[k].n, sizeof(double), cmp_double);
-            if (vars[k].mode == RETRO_MODE_EXACT && !vars[k].half) {
+            if (vars[k].mode == RETRO_MODE_EXACT && !vars[k].half && !vars[k].peer) {
                 exact_ms = vars[k].ms[vars[k].n / 2];
                 exact_y = vars[k].ms_y[vars[k].n / 2];
             }
@@ -190,7 +199,7 @@ int cmd_accuracy(int argc, char **argv)
         for (int k = 0; k < nv; k++) {
             rows[k].label = vars[k].label;
             rows[k].what = vars[k].what;
-            rows[k].kernel = retro_kernel_best(vars[k].mode)->name;
+            rows[k].kernel = vars[k].peer ? "its own (scalar)" : retro_kernel_best(vars[k].mode)->name;
             rows[k].ms = vars[k].ms[vars[k].n / 2];
             rows[k].speedup = exact_ms / rows[k].ms;
             rows[k].ms_y = vars[k].ms_y[vars[k].n / 2];
