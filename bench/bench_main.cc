@@ -13,6 +13,7 @@
 #include "cases.h"
 #include "extras.h"
 #include "options.h"
+#include "peer_cases.h"
 #include "pin.h"
 #include "progress_reporter.h"
 #include "run_context.h"
@@ -155,6 +156,7 @@ int main(int argc, char **argv)
     plan_cases(&plan);
     if (!opt.no_extras && opt.scene.empty())
         plan_extras(&plan);
+    plan_peer(&plan);
     for (const auto &c : plan.cases) {
         auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
         b->Unit(benchmark::kMillisecond);

@@ -20,6 +20,7 @@ enum : unsigned {
     GROUP_DISTANCE = 1u << 2,
     GROUP_SUBMISSION = 1u << 3, // extras.cc: the course painter and the submission
     GROUP_EFFECTS = 1u << 4,    // extras.cc: what each effect costs
+    GROUP_PEER = 1u << 5,       // peer_cases.cc: the classic demo's algorithm, not a kernel
 };
 
 struct BenchCase {

@@ -16,7 +16,7 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
-  --benchmark_filter="^$case\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
+  --benchmark_filter="^($case|peer/flat-64/classic-voxelspace/1t/32x24/D16)\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
   --benchmark_min_warmup_time=0 --report="$tmp" --charts="$tmp/charts.gp" \
   --benchmark_out="$tmp/bench.json" --benchmark_out_format=json >"$tmp/out" 2>&1; then
   echo "FAIL: retro-bench exited with an error:"
@@ -39,6 +39,8 @@ check "$tmp/charts.gp" '"naive"' "no naive bar in the charts script"
 check "$tmp/out" "$case" "no progress line for the case"
 check "$tmp/BENCH.md" '^| machine | \(quiet\|busy\): ' "BENCH.md does not say how busy the machine was"
 check "$tmp/BENCH.md" '^| settings | full run |' "BENCH.md does not say whether the run was quick"
+check "$tmp/BENCH.md" '^### Peer algorithm: the classic voxel-space demo' "no peer table in BENCH.md"
+check "$tmp/BENCH.md" '^| flat-64 | [0-9]' "no peer row in BENCH.md"
 check "$tmp/BENCH.md" 'library_build_type' "BENCH.md does not explain library_build_type"
 check "$tmp/bench.json" '"retro_quick": "false"' "the JSON does not record whether the run was quick"
 [ "$fail" = 0 ] && echo "ok: retro-bench timed $case"
