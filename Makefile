@@ -32,7 +32,7 @@ LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
 # CLI and the benchmark only, never in the library or its kernel table.
 PEER_SRC := $(wildcard src/peer/*.c)
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
-TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c
+TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c $(PEER_SRC)
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(wildcard src/kernel_*.c)
