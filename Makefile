@@ -27,7 +27,10 @@ PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
 LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
-LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
+# The course API (render, draw_line, update_player, bonus_implemented) is kept out of libretro,
+# whose every exported name starts with retro_, so a program can define its own render().
+COURSE_SRC := src/course.c
+LIB_SRC  := $(filter-out src/cli/% $(COURSE_SRC),$(wildcard src/*.c))
 # Peer algorithms (src/peer/): others' traversals timed and measured beside the kernels, in the
 # CLI and the benchmark only, never in the library or its kernel table.
 PEER_SRC := $(wildcard src/peer/*.c)
@@ -44,6 +47,7 @@ COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)
 COUNT_LIB_OBJ := $(filter-out $(COUNTED:src/%.c=$(BUILD)/src/%.o),$(LIB_OBJ))
 
 LIB      := $(BUILD)/libretro.a
+COURSE_LIB := $(BUILD)/libretro-course.a
 RETRO    := $(BIN)/retro
 TESTS    := $(BIN)/retro-tests
 COUNT_TESTS := $(BIN)/retro-count-tests
@@ -80,20 +84,23 @@ $(BUILD)/count/%.o: src/%.c
 $(LIB): $(LIB_OBJ)
 	$(Q)rm -f $@ && ar rcs $@ $^
 
+$(COURSE_LIB): $(COURSE_SRC:%.c=$(BUILD)/%.o)
+	$(Q)rm -f $@ && ar rcs $@ $^
+
 $(RETRO): $(CLI_OBJ) $(LIB)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  LD      $@")
 	$(Q)$(CC) $(SAN) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
 
-$(TESTS): $(TEST_OBJ) $(LIB)
+$(TESTS): $(TEST_OBJ) $(COURSE_LIB) $(LIB)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(SAN) -o $@ $(TEST_OBJ) $(LIB) $(TEST_LIBS) $(LDLIBS)
+	$(Q)$(CC) $(SAN) -o $@ $(TEST_OBJ) $(COURSE_LIB) $(LIB) $(TEST_LIBS) $(LDLIBS)
 
-$(COUNT_TESTS): $(COUNT_OBJ) $(COUNT_LIB_OBJ)
+$(COUNT_TESTS): $(COUNT_OBJ) $(COUNT_LIB_OBJ) $(COURSE_LIB)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(SAN) -o $@ $(COUNT_OBJ) $(COUNT_LIB_OBJ) $(TEST_LIBS) $(LDLIBS)
+	$(Q)$(CC) $(SAN) -o $@ $(COUNT_OBJ) $(COURSE_LIB) $(COUNT_LIB_OBJ) $(TEST_LIBS) $(LDLIBS)
 
 maps: $(RETRO) ## generate the default scenes and the analytic test maps under maps/
 	$(Q)sh scripts/make-maps.sh $(RETRO)
@@ -195,10 +202,10 @@ $(BUILD)/bench/ybuffer_noeffects.o: src/kernel_ybuffer.c
 $(BUILD)/bench/run_context.o: ALLCXXFLAGS += -DRETRO_BUILD_CC='"$(shell $(CC) --version | head -n 1)"' \
   -DRETRO_BUILD_CFLAGS='"$(strip $(CFLAGS) $(FPFLAGS) $(SAN))"'
 
-$(BENCH_BIN): $(BENCH_OBJ) $(LIB)
+$(BENCH_BIN): $(BENCH_OBJ) $(COURSE_LIB) $(LIB)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CXX) $(SAN) -o $@ $(BENCH_OBJ) $(LIB) $(shell pkg-config --libs $(BENCH_PKGS)) -lpthread $(LDLIBS)
+	$(Q)$(CXX) $(SAN) -o $@ $(BENCH_OBJ) $(COURSE_LIB) $(LIB) $(shell pkg-config --libs $(BENCH_PKGS)) -lpthread $(LDLIBS)
 
 .PHONY: bench
 bench: deps ## time every kernel, scene and mode: RESULTS/BENCH.md, bench.json, charts (QUICK=1)

@@ -9,6 +9,7 @@
 
 #include "accuracy_metrics.h"
 #include "cli.h"
+#include "maps_dir.h"
 #include "peer/peer_voxelspace.h"
 #include "retro.h"
 #include "retro_maps.h"
@@ -84,20 +85,26 @@ static double time_variant(retro_ctx *rc, const retro_kernel *k, variant *v, con
 
 static void help(void)
 {
-    printf("usage: retro accuracy [--poses N] [--seed S] [-o OUT.md] [--chart OUT.svg]\n\n"
+    printf("usage: retro accuracy [--poses N] [--seed S] [-o OUT.md] [--chart OUT.svg] [--maps DIR]\n\n"
            "Renders N seeded random poses (default 20) of each default scene (maps/) and course\n"
            "scene ($RETRO_SHARED/course) at 640x480, D 800, with every accuracy variant through\n"
            "the fastest kernel for its mode, and the classic demo's algorithm as a peer (its own\n"
            "code, src/peer/), compares each frame with mode truth and writes a table\n"
            "(default ./ACCURACY.md) and a Pareto chart (default ./accuracy-pareto.svg, and a .png\n"
-           "beside it). make accuracy writes them to build/results/.\n");
+           "beside it). make accuracy writes them to build/results/.\n"
+           "  --poses N      poses per scene (default 20; make accuracy: 20)\n"
+           "  --seed S       seed of the poses (default 1)\n"
+           "  -o OUT.md      the table\n"
+           "  --chart OUT.svg  the chart (OUT.png beside it where gnuplot has a PNG terminal)\n"
+           "  --maps DIR     the generated maps (default: maps/ if it holds them, as in the\n"
+           "                 source tree; else $XDG_CACHE_HOME/retro/maps, made on first use)\n");
 }
 
 int cmd_accuracy(int argc, char **argv)
 {
     long poses = 20;
     uint64_t seed = 1;
-    const char *out_md = "ACCURACY.md", *out_svg = "accuracy-pareto.svg";
+    const char *out_md = "ACCURACY.md", *out_svg = "accuracy-pareto.svg", *maps_given = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -116,6 +123,8 @@ int cmd_accuracy(int argc, char **argv)
             out_md = val;
         else if (!strcmp(a, "--chart"))
             out_svg = val;
+        else if (!strcmp(a, "--maps"))
+            maps_given = val;
         else
             return cli_error("accuracy", "unknown option '%s' (retro accuracy --help)", a);
     }
@@ -134,10 +143,12 @@ int cmd_accuracy(int argc, char **argv)
     };
     const int nv = (int)(sizeof vars / sizeof vars[0]);
     const char *shared = getenv("RETRO_SHARED") ? getenv("RETRO_SHARED") : "../shared";
-    char scenes[6][512];
+    char scenes[6][1100], mapsdir[1024];
+    if (cli_maps_dir("accuracy", maps_given, mapsdir, sizeof mapsdir))
+        return CLI_EBADINPUT;
     int ns = 0;
     for (int i = 0; i < 3; i++)
-        snprintf(scenes[ns++], sizeof scenes[0], "maps/%s", (const char *[]){"alpine", "islands", "canyon"}[i]);
+        snprintf(scenes[ns++], sizeof scenes[0], "%s/%s", mapsdir, (const char *[]){"alpine", "islands", "canyon"}[i]);
     for (int i = 0; i < 3; i++)
         snprintf(scenes[ns++], sizeof scenes[0], "%s/course/%s", shared, (const char *[]){"valley", "island", "pyramids"}[i]);
 

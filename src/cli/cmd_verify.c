@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "maps_dir.h"
 #include "retro.h"
 #include "retro_maps.h"
 #include "retro_scene.h"
@@ -26,6 +27,7 @@ typedef struct {
     const char *only;      /* a kernel name, or NULL for all */
     const char *outdir;
     const char *shared;
+    const char *mapsdir;   /* --maps, ./maps or the cache (maps_dir.h) */
     map_slot maps[32];
     int nmaps;
     int differ, compared, skipped;
@@ -42,7 +44,7 @@ static const retro_map *get_map(verify_run *v, const char *name, char *err, size
     if (!strncmp(name, "course/", 7))
         snprintf(prefix, sizeof prefix, "%s/course/%s", v->shared, name + 7);
     else
-        snprintf(prefix, sizeof prefix, "maps/%s", name);
+        snprintf(prefix, sizeof prefix, "%s/%s", v->mapsdir, name);
     s->state = retro_map_load(prefix, &s->map, err, n) ? -1 : 1;
     return s->state > 0 ? &s->map : NULL;
 }
@@ -237,20 +239,26 @@ static int run_fx_case(verify_run *v, const verify_fx_case *vc, verify_variant *
 
 static void help(void)
 {
-    printf("usage: retro verify [--quick] [-k KERNEL] [--out DIR]\n\n"
+    printf("usage: retro verify [--quick] [-k KERNEL] [--out DIR] [--maps DIR]\n\n"
            "Renders a fixed set of cases (src/cli/verify_cases.c) with every kernel in every mode\n"
            "it supports, at every ISA level and thread count it runs with here, and compares each\n"
            "frame with naive of the same mode byte for byte. Exit 0 when all are identical, 1 on\n"
            "any difference (a diff image per mismatch goes to DIR, default results/verify).\n"
            "  --quick     the reduced set `make check` runs\n"
            "  -k KERNEL   only this kernel\n"
-           "Maps come from maps/ (make maps) and $RETRO_SHARED/course (default ../shared).\n");
+           "  --out DIR   where diff images of mismatches go (default results/verify)\n"
+           "  --maps DIR  the generated maps (default: maps/ if it holds them, as in the source\n"
+           "              tree after make maps; else $XDG_CACHE_HOME/retro/maps, made on first use)\n"
+           "Course maps come from $RETRO_SHARED/course (default ../shared); cases on them are\n"
+           "skipped when it is absent.\n");
 }
 
 int cmd_verify(int argc, char **argv)
 {
     verify_run v;
     memset(&v, 0, sizeof v);
+    const char *maps_given = NULL;
+    char mapsdir[1024];
     v.outdir = "results/verify";
     v.shared = getenv("RETRO_SHARED") ? getenv("RETRO_SHARED") : "../shared";
     for (int i = 1; i < argc; i++) {
@@ -264,11 +272,16 @@ int cmd_verify(int argc, char **argv)
             v.only = argv[++i];
         else if (!strcmp(a, "--out") && i + 1 < argc)
             v.outdir = argv[++i];
+        else if (!strcmp(a, "--maps") && i + 1 < argc)
+            maps_given = argv[++i];
         else
             return cli_error("verify", "unknown argument '%s' (retro verify --help)", a);
     }
     if (v.only && !retro_kernel_find(v.only))
         return cli_error("verify", "unknown kernel '%s' (retro kernels lists them)", v.only);
+    if (cli_maps_dir("verify", maps_given, mapsdir, sizeof mapsdir))
+        return CLI_EBADINPUT;
+    v.mapsdir = mapsdir;
 
     verify_variant vars[VERIFY_MAX_VARIANTS];
     int nvars = verify_variants(vars, VERIFY_MAX_VARIANTS, v.only);
