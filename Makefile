@@ -10,6 +10,8 @@ SAN      ?=
 V        ?= 0
 Q        := $(if $(filter 1,$(V)),,@)
 SHARED   ?= ../shared
+VERSION  := 0.1.0
+SOVERSION := 0
 # Where runs write (bench, accuracy, demo): an ignored folder. `make publish` copies a full
 # run from here into the committed results/ that the README quotes.
 RESULTS  ?= $(BUILD)/results
@@ -62,14 +64,19 @@ deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
 
 # Per-file flags: OpenMP only where threads are made.
-$(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o: CFLAGS_FILE := -fopenmp
+$(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o \
+  $(BUILD)/pic/src/kernel_omp.o $(BUILD)/pic/src/omp_pool.o: CFLAGS_FILE := -fopenmp
 
 # Per-file ISA flags: each SIMD kernel file gets exactly its ISA, never -march=native and never
 # -mfma (with -ffp-contract=off above, no multiply-add is fused anywhere).
-$(BUILD)/src/kernel_simd_sse2.o $(BUILD)/count/kernel_simd_sse2.o: CFLAGS_ISA := -msse2
-$(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o: CFLAGS_ISA := -mavx2
-$(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o: \
+$(BUILD)/src/kernel_simd_sse2.o $(BUILD)/count/kernel_simd_sse2.o $(BUILD)/pic/src/kernel_simd_sse2.o: \
+  CFLAGS_ISA := -msse2
+$(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o $(BUILD)/pic/src/kernel_simd_avx2.o: \
+  CFLAGS_ISA := -mavx2
+$(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o $(BUILD)/pic/src/kernel_simd_avx512.o: \
   CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+
+$(BUILD)/src/cli/main.o: CFLAGS_FILE := -DRETRO_VERSION='"$(VERSION)"'
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
@@ -232,12 +239,45 @@ submission: ## the single-file course render.c (results/submission/render.c)
 	$(Q)sh scripts/make-submission.sh results/submission/render.c
 	@echo "  GEN     results/submission/render.c"
 
+# --- installation: the CLI, libretro (static, and shared with a soname), headers, retro.pc,
+# the man page. The shared library's objects are built again position-independent, so the
+# static library and the binaries keep the code the benchmark times.
 PREFIX ?= /usr/local
-install: $(RETRO) $(LIB) ## install retro, libretro.a and the headers under PREFIX
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/retro
+SO      := $(BUILD)/libretro.so.$(VERSION)
+PIC_OBJ := $(LIB_SRC:%.c=$(BUILD)/pic/%.o)
+MAN     := $(BUILD)/retro.1
+
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $< (-fPIC)")
+	$(Q)$(CC) $(ALLCFLAGS) -fPIC -fno-semantic-interposition $(CFLAGS_FILE) $(CFLAGS_ISA) $(PKG_CFLAGS) \
+	  -c $< -o $@
+
+# --no-undefined: the library names every library it needs, so a program links with -lretro.
+$(SO): $(PIC_OBJ)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SAN) -shared -Wl,-soname,libretro.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LDLIBS)
+
+# help2man (Debian package help2man) writes the page from retro --help and --version.
+$(MAN): $(RETRO)
+	@$(if $(Q),echo "  MAN     $@")
+	$(Q)help2man --no-info --name="voxel-space terrain render kernels" \
+	  --include=scripts/retro.h2m $(RETRO) -o $@.tmp && mv $@.tmp $@
+
+.PHONY: shared
+shared: $(SO) ## build the shared library, build/libretro.so.VERSION
+install: $(RETRO) $(LIB) $(SO) $(MAN) ## install retro, libretro (.a, .so), headers, retro.pc, man page under PREFIX
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	  $(DESTDIR)$(PREFIX)/include/retro $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(RETRO) $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(SO) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libretro.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libretro.so.$(SOVERSION)
+	ln -sf libretro.so.$(SOVERSION) $(DESTDIR)$(PREFIX)/lib/libretro.so
 	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/retro/
+	sh scripts/make-pc.sh "$(PREFIX)" "$(VERSION)" "$(PKGS_LIB)" "-fopenmp -lm" \
+	  >$(DESTDIR)$(PREFIX)/lib/pkgconfig/retro.pc
+	install -m 644 $(MAN) $(DESTDIR)$(PREFIX)/share/man/man1/
 
 clean: ## remove build outputs (generated maps too)
 	rm -rf build maps/*.pgm maps/*.ppm maps/*.png results/verify

@@ -4,6 +4,11 @@
 
 #include "cli.h"
 
+/* The Makefile passes the version it installs under (retro.pc, the soname). */
+#ifndef RETRO_VERSION
+#define RETRO_VERSION "unknown"
+#endif
+
 static const struct {
     const char *name;
     int (*fn)(int, char **);
@@ -19,7 +24,10 @@ static const struct {
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: retro COMMAND [ARGS]   (retro COMMAND --help for its options)\n\n");
+    fprintf(f, "usage: retro COMMAND [ARGS]   (retro COMMAND --help for its options)\n"
+               "       retro --version\n\n"
+               "Voxel-space (Comanche-style) terrain renderer: one frame definition, many kernels\n"
+               "proven pixel-identical to the reference.\n\nCommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].what);
 }
@@ -32,6 +40,10 @@ int main(int argc, char **argv)
     }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(stdout);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "-V")) {
+        printf("retro %s\n", RETRO_VERSION);
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
