@@ -1,5 +1,6 @@
 /* retro fly: a scene's fly-through path, one numbered image per frame. */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -11,12 +12,14 @@
 
 static void help(void)
 {
-    printf("usage: retro fly SCENE [-o PATTERN] [--frames N] [-k KERNEL] [-m MODE] [-s WxH]\n"
+    printf("usage: retro fly MAP|SCENE [-o PATTERN] [--frames N] [-k KERNEL] [-m MODE] [-s WxH]\n"
            "                 [-d DISTANCE] [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB]\n"
            "                 [--isa LEVEL] [--threads N] [--lod L]\n\n"
            "Renders the fly-through [path] of SCENE (a .scene file, README, Scenes), one image per\n"
            "frame, with a progress line per frame on stderr. Without a path it renders the scene's\n"
-           "camera once.\n"
+           "camera once. A plain MAP (MAP.pgm and MAP.ppm or .png) is flown round a default\n"
+           "circuit: one counter-clockwise circle of radius S/4 round the map's centre, looking\n"
+           "along it, at the default view's height, in 60 frames.\n"
            "  -o PATTERN  output files, .ppm or .png, with one %%d, %%Nd or %%0Nd for the frame\n"
            "              number from 0 (default results/fly/NAME-%%03d.png)\n"
            "  --frames N  resample the path to N frames (default: the scene's [path] frames)\n"
@@ -55,12 +58,13 @@ static int frame_path(const pattern *pt, int i, char *out, size_t n)
     return len < 0 || (size_t)len >= n ? -1 : 0;
 }
 
-/* results/fly/NAME-%03d.png, NAME the scene file's name without .scene. */
+/* results/fly/NAME-%03d.png, NAME the scene file's name without .scene, or the map's name. */
 static int default_pattern(const char *scene, char *out, size_t n)
 {
     const char *base = strrchr(scene, '/');
     base = base ? base + 1 : scene;
-    int len = snprintf(out, n, "results/fly/%.*s-%%03d.png", (int)(strlen(base) - 6), base);
+    int keep = (int)strlen(base) - (is_scene_file(scene) ? 6 : 0);
+    int len = snprintf(out, n, "results/fly/%.*s-%%03d.png", keep, base);
     return len < 0 || (size_t)len >= n ? -1 : 0;
 }
 
@@ -71,12 +75,37 @@ static int make_dirs(void)
     return 0;
 }
 
+/* A plain map's default path: one counter-clockwise circle of radius S/4 round the map's
+ * centre, looking along it, at the default view's height, in CIRCUIT_FRAMES frames. */
+enum { CIRCUIT_FRAMES = 60 };
+static void default_circuit(render_job *j)
+{
+    retro_scene *s = &j->scene;
+    const float c = 0.5f * (float)j->map.size, r = 0.25f * (float)j->map.size;
+    s->nkeys = 9;
+    s->frames = CIRCUIT_FRAMES;
+    for (int i = 0; i < s->nkeys; i++) {
+        int deg = 45 * i; /* steps of 45 degrees: the path interpolates linearly between keys */
+        double a = deg * 3.14159265358979323846 / 180.0;
+        retro_keyframe *k = &s->keys[i];
+        k->t = (float)i / (float)(s->nkeys - 1);
+        k->x = c + r * (float)cos(a);
+        k->y = c - r * (float)sin(a); /* the map's y axis points down */
+        k->height = j->view.height;
+        k->angle = (deg + 90) % 360;
+        k->morph_t = 0;
+    }
+    s->x = s->y = NAN; /* the path, not a still camera */
+}
+
 static int fly(const render_opts *o, const pattern *pt, long frames, int default_dirs)
 {
     render_job j;
     if (job_open("fly", o, &j))
         return CLI_EBADINPUT;
     retro_scene *s = &j.scene;
+    if (!j.is_scene)
+        default_circuit(&j);
     int n = frames ? (int)frames : s->nkeys ? s->frames : 1, status = 0;
     if (s->nkeys)
         s->frames = n;
@@ -124,13 +153,11 @@ int cmd_fly(int argc, char **argv)
     fly_args fa = {NULL, 0};
     render_opts o;
     render_opts_init(&o);
-    int r = render_args("fly", "SCENE", argc, argv, &o, fly_extra, &fa, help);
+    int r = render_args("fly", "MAP|SCENE", argc, argv, &o, fly_extra, &fa, help);
     if (r)
         return r == 1 ? 0 : r;
     const char *out = fa.out;
     long frames = fa.frames;
-    if (!is_scene_file(o.map))
-        return cli_error("fly", "'%s' is not a scene file (NAME.scene)", o.map);
     char def[2048];
     if (!out && default_pattern(o.map, def, sizeof def))
         return cli_error("fly", "scene path too long: %s", o.map);

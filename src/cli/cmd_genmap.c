@@ -1,6 +1,7 @@
 /* retro genmap: procedural terrain and analytic test maps, deterministic from the seed. */
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "retro.h"
@@ -66,6 +67,25 @@ int cmd_genmap(int argc, char **argv)
         return cli_error("genmap", "no output given: -o PREFIX");
     char err[512];
     retro_map m;
+    /* A 1x1 map first: an unknown style is refused at once, with the list, before a large
+     * map is announced. */
+    if (retro_mapgen(style, seed, 1, &m, err, sizeof err)) {
+        if (!strstr(err, "unknown map style"))
+            return cli_error("genmap", "%s", err);
+        char list[512] = "";
+        for (const char *const *s = retro_mapgen_styles; *s; s++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", *s == retro_mapgen_styles[0] ? "" : ", ", *s);
+        return cli_error("genmap", "unknown style '%s'; the styles are %s, and alpine-unlit, "
+                         "islands-unlit, canyon-unlit", style, list);
+    }
+    retro_map_free(&m);
+    /* Large maps take seconds: say what is being made, then how long it took. */
+    int announce = size >= 512;
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    if (announce)
+        fprintf(stderr, "retro genmap: generating %s, %ldx%ld, seed %llu...\n", style, size, size,
+                (unsigned long long)seed);
     if (retro_mapgen(style, seed, (int)size, &m, err, sizeof err))
         return cli_error("genmap", "%s", err);
     for (size_t i = 0; offset && i < (size_t)m.size * (size_t)m.size; i++) {
@@ -74,5 +94,11 @@ int cmd_genmap(int argc, char **argv)
     }
     int r = retro_map_save(out, &m, png, err, sizeof err);
     retro_map_free(&m);
-    return r ? cli_error("genmap", "%s", err) : 0;
+    if (r)
+        return cli_error("genmap", "%s", err);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    if (announce)
+        fprintf(stderr, "retro genmap: wrote %s.pgm and %s.%s in %.1f s\n", out, out, png ? "png" : "ppm",
+                (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9);
+    return 0;
 }

@@ -95,6 +95,10 @@ int job_open(const char *cmd, const render_opts *o, render_job *j)
         job_close(j);
         return CLI_EBADINPUT;
     }
+    /* Say what runs: the kernel is chosen per CPU and mode unless -k names it. */
+    fprintf(stderr, "retro %s: kernel %s%s, mode %s, %dx%d, D %d%s\n", cmd, j->k->name,
+            o->kernel ? "" : " (the fastest here for the mode)", retro_mode_name(j->mode), j->c.scr_width,
+            j->c.scr_height, j->c.distance, j->is_scene && j->scene.fx.flags ? ", with the scene's effects" : "");
     return 0;
 }
 
