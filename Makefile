@@ -235,9 +235,10 @@ accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto char
 publish: ## copy the last full run from RESULTS into results/ and refresh the README's figures
 	$(Q)sh scripts/publish.sh $(RESULTS) results README.md
 
-submission: ## the single-file course render.c (results/submission/render.c)
+submission: ## the single-file course render.c (results/submission/render.c), built and tested as the course does
 	$(Q)sh scripts/make-submission.sh results/submission/render.c
 	@echo "  GEN     results/submission/render.c"
+	$(Q)CC="$(CC)" sh scripts/check-submission.sh results/submission/render.c $(SHARED)
 
 # --- installation: the CLI, libretro (static, and shared with a soname), headers, retro.pc,
 # the man page. The shared library's objects are built again position-independent, so the
