@@ -57,8 +57,22 @@ COUNT_TESTS := $(BIN)/retro-count-tests
 .PHONY: all help deps check verify demo maps asan clean install submission accuracy
 all: $(RETRO) ## build the library and the retro CLI
 
-help: ## list the targets
+help: ## list the targets and the variables they take
 	@grep -hE '^[a-z-]+:.*## ' Makefile | sed 's/:.*## /\t/' | expand -t 16
+	@echo
+	@echo "Variables (make TARGET NAME=VALUE):"
+	@echo "  SHARED=DIR      the course data folder, DIR/course (default ../shared); tests skip without it"
+	@echo "  BUILD=DIR       where objects, binaries and runs go (default build)"
+	@echo "  V=1             show the full compiler commands"
+	@echo "  PREFIX=DIR      make install's destination (default /usr/local; DESTDIR is honoured)"
+	@echo "  QUICK=1         make bench: 3 short repetitions, fewer sweep points (not publishable)"
+	@echo "  RESULTS=DIR     where bench, accuracy and demo write (default BUILD/results)"
+	@echo "  BENCH_ARGS=...  more retro-bench flags, e.g. --benchmark_filter=omp (build/bin/retro-bench --help)"
+	@echo "  ACCURACY_ARGS=  more retro accuracy flags, e.g. --poses 5"
+	@echo "  CC, OPT, CFLAGS the C compiler and its flags (default cc, -O2)"
+	@echo
+	@echo "Exports: make bench writes RESULTS/bench.json (google-benchmark's JSON, every repetition"
+	@echo "and the run's context); make bench-csv converts it to RESULTS/bench.csv."
 
 deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
@@ -231,6 +245,11 @@ accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto char
 
 # The only target that writes the committed results/: a full (not quick) run of make bench,
 # and make accuracy and make demo if they ran, then the README's generated figures.
+.PHONY: bench-csv
+bench-csv: ## the last run's bench.json as CSV: RESULTS/bench.csv
+	$(Q)python3 scripts/bench-csv.py $(RESULTS)/bench.json >$(RESULTS)/bench.csv.tmp
+	$(Q)mv $(RESULTS)/bench.csv.tmp $(RESULTS)/bench.csv && echo "  wrote $(RESULTS)/bench.csv"
+
 .PHONY: publish
 publish: ## copy the last full run from RESULTS into results/ and refresh the README's figures
 	$(Q)sh scripts/publish.sh $(RESULTS) results README.md

@@ -41,6 +41,8 @@ check "$tmp/BENCH.md" '^| machine | \(quiet\|busy\): ' "BENCH.md does not say ho
 check "$tmp/BENCH.md" '^| settings | full run |' "BENCH.md does not say whether the run was quick"
 check "$tmp/BENCH.md" '^### Peer algorithm: the classic voxel-space demo' "no peer table in BENCH.md"
 check "$tmp/BENCH.md" '^| flat-64 | [0-9]' "no peer row in BENCH.md"
+python3 scripts/bench-csv.py "$tmp/bench.json" >"$tmp/bench.csv" 2>&1
+check "$tmp/bench.csv" "^$case,exact,flat-64,naive,1,32x24,16,\(repetition\|median\),[0-9]" "make bench-csv's converter lost the case"
 check "$tmp/BENCH.md" 'library_build_type' "BENCH.md does not explain library_build_type"
 check "$tmp/bench.json" '"retro_quick": "false"' "the JSON does not record whether the run was quick"
 [ "$fail" = 0 ] && echo "ok: retro-bench timed $case"
