@@ -278,11 +278,13 @@ $(SO): $(PIC_OBJ)
 	@$(if $(Q),echo "  LD      $@")
 	$(Q)$(CC) $(SAN) -shared -Wl,-soname,libretro.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LDLIBS)
 
-# help2man (Debian package help2man) writes the page from retro --help and --version.
-$(MAN): $(RETRO)
+# help2man (Debian package help2man) writes the page from retro --help and --version, and
+# every subcommand's --help (scripts/man-include.sh).
+$(MAN): $(RETRO) scripts/retro.h2m scripts/man-include.sh
 	@$(if $(Q),echo "  MAN     $@")
+	$(Q)sh scripts/man-include.sh $(RETRO) >$(BUILD)/retro.h2m
 	$(Q)help2man --no-info --name="voxel-space terrain render kernels" \
-	  --include=scripts/retro.h2m $(RETRO) -o $@.tmp && mv $@.tmp $@
+	  --include=$(BUILD)/retro.h2m $(RETRO) -o $@.tmp && mv $@.tmp $@
 
 .PHONY: shared
 shared: $(SO) ## build the shared library, build/libretro.so.VERSION

@@ -29,6 +29,7 @@ for lib in "$prefix/lib/libretro.so" "$prefix/lib/libretro.a"; do
 done
 grep -q '^\.TH RETRO' "$prefix/share/man/man1/retro.1" || fail "retro.1 is not a man page"
 grep -q 'genmap' "$prefix/share/man/man1/retro.1" || fail "retro.1 does not list the commands"
+grep -q '^\.SS "retro accuracy"' "$prefix/share/man/man1/retro.1" || fail "retro.1 lacks the subcommands' options"
 # A sanitized build's library needs the sanitizer runtime in the program too.
 san=""
 nm "$prefix/lib/libretro.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize=address,undefined"
