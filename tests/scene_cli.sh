@@ -96,16 +96,18 @@ expect_bad "morph keyframe of another size" "is 2x2 but the map" render "$tmp/mo
 expect_bad "missing morph keyframe" "test/none.pgm" render "$tmp/morph-none.scene" -o "$tmp/out.png"
 expect_bad "effects in mode course" "effects need mode exact or lod" render "$tmp/ok.scene" -m course -o "$tmp/out.png"
 expect_bad "fly: malformed scene" "bad.scene:4: [camera] angel" fly "$tmp/bad.scene" -o "$tmp/out%d.png"
-expect_bad "fly: not a scene" "not a scene file" fly maps/test/ramp-64 -o "$tmp/out%d.png"
+expect_bad "fly: no such map" "maps/test/none" fly maps/test/none -o "$tmp/out%d.png"
 expect_bad "fly: pattern without %d" "bad output pattern" fly "$tmp/path.scene" -o "$tmp/out.png"
 expect_bad "fly: pattern with two %d" "bad output pattern" fly "$tmp/path.scene" -o "$tmp/%d-%d.png"
 expect_bad "fly: bad frame count" "bad frame count" fly "$tmp/path.scene" --frames 0 -o "$tmp/out%d.png"
 
-# retro fly: N frames, a progress line each, nothing more.
+# retro fly: N frames, a progress line each, and one line saying which kernel and mode ran.
 "$retro" fly "$tmp/path.scene" -o "$tmp/fly-%03d.png" 2>"$tmp/progress" || fail "retro fly"
 [ "$(ls "$tmp" | grep -c '^fly-00[0-3]\.png$')" -eq 4 ] && [ ! -e "$tmp/fly-004.png" ] ||
   fail "retro fly writes the scene's 4 frames: $(ls "$tmp" | grep fly- | tr '\n' ' ')"
-[ "$(wc -l <"$tmp/progress")" -eq 4 ] || fail "one progress line per frame: $(cat "$tmp/progress")"
+[ "$(grep -c '^retro fly: [0-9]/4 ' "$tmp/progress")" -eq 4 ] && [ "$(wc -l <"$tmp/progress")" -eq 5 ] &&
+  grep -q '^retro fly: kernel .*, mode exact, ' "$tmp/progress" ||
+  fail "one progress line per frame and one for the kernel: $(cat "$tmp/progress")"
 cmp -s "$tmp/fly-000.png" "$tmp/fly-003.png" && fail "the path moves the camera"
 "$retro" fly "$tmp/path.scene" --frames 7 -s 16x12 -o "$tmp/n%d.png" 2>/dev/null &&
   [ -e "$tmp/n6.png" ] && [ ! -e "$tmp/n7.png" ] && [ "$(png_size "$tmp/n3.png")" = "16 12" ] ||

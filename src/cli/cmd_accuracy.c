@@ -92,7 +92,7 @@ static void help(void)
            "code, src/peer/), compares each frame with mode truth and writes a table\n"
            "(default ./ACCURACY.md) and a Pareto chart (default ./accuracy-pareto.svg, and a .png\n"
            "beside it). make accuracy writes them to build/results/.\n"
-           "  --poses N      poses per scene (default 20; make accuracy: 20)\n"
+           "  --poses N      poses per scene (default 20)\n"
            "  --seed S       seed of the poses (default 1)\n"
            "  -o OUT.md      the table\n"
            "  --chart OUT.svg  the chart (OUT.png beside it where gnuplot has a PNG terminal)\n"

@@ -46,6 +46,8 @@ typedef struct render_job {
     uint32_t *out;
     ctx_t c;
     retro_ctx rc;
+    int chosen;          /* the kernel was picked for the CPU and mode, not named by -k */
+    int said;            /* the "what ran" line is printed */
 } render_job;
 
 /* Loads the scene (if o->map is one), the map and the morph keyframe, and picks the kernel.

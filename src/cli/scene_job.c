@@ -95,10 +95,7 @@ int job_open(const char *cmd, const render_opts *o, render_job *j)
         job_close(j);
         return CLI_EBADINPUT;
     }
-    /* Say what runs: the kernel is chosen per CPU and mode unless -k names it. */
-    fprintf(stderr, "retro %s: kernel %s%s, mode %s, %dx%d, D %d%s\n", cmd, j->k->name,
-            o->kernel ? "" : " (the fastest here for the mode)", retro_mode_name(j->mode), j->c.scr_width,
-            j->c.scr_height, j->c.distance, j->is_scene && j->scene.fx.flags ? ", with the scene's effects" : "");
+    j->chosen = o->kernel == NULL;
     return 0;
 }
 
@@ -139,6 +136,12 @@ int job_write(const char *cmd, render_job *j, const player_t *p, const char *pat
         return cli_error(cmd, "%s", retro_strerror(e));
     if (retro_image_write(path, j->out, j->c.scr_width, j->c.scr_height, err, sizeof err))
         return cli_error(cmd, "%s", err);
+    /* Say what ran, once, after the first image is written (a failure prints only its error):
+     * the kernel is chosen per CPU and mode unless -k names it. */
+    if (!j->said++)
+        fprintf(stderr, "retro %s: kernel %s%s, mode %s, %dx%d, D %d%s\n", cmd, j->k->name,
+                j->chosen ? " (the fastest here for the mode)" : "", retro_mode_name(j->mode), j->c.scr_width,
+                j->c.scr_height, j->c.distance, j->is_scene && j->scene.fx.flags ? ", with the scene's effects" : "");
     return 0;
 }
 
