@@ -12,7 +12,6 @@
 #include <map>
 #include <sstream>
 
-static const double NaN = std::nan("");
 
 bool report_write_file(const std::string &path, const std::string &text)
 {
