@@ -12,7 +12,6 @@
 #include <map>
 #include <sstream>
 
-
 bool report_write_file(const std::string &path, const std::string &text)
 {
     // Through a temporary file renamed into place: a failed run leaves the previous report.
