@@ -112,6 +112,27 @@ def bench_blocks(md, raw):
                           f"{r[h.index('course painter (-O3)')]} ms) | {verdict(ratio >= 20)}"
                           f"{', goal met' if ratio >= 40 else ''} |")
     blocks["bench:targets"] = "\n".join(tl)
+    if sub:
+        h, r = sub[0], {row[0]: row for row in sub[1:]}
+        ratio = h.index("submission vs painter")
+        parts = [f"{r[s][ratio]}{' the plain course painter at `-O3`' if i == 0 else ''} on {s} "
+                 f"({r[s][h.index('submission (-O3)')]} ms against {r[s][h.index('course painter (-O3)')]} ms)"
+                 for i, s in enumerate(s for s in ("valley", "island", "pyramids") if s in r)]
+        blocks["bench:submission"] = ("**Speed** in the published run: " + ", ".join(parts) + ". It starts "
+                                      "its threads every frame, so its time varies more from run to run "
+                                      "than the kernels'.")
+    eff_key = next((k for k in t if k.startswith("What each effect costs")), None)
+    if eff_key:
+        e = t[eff_key]
+        lines = [f"Cost of each effect ({eff_key[len('What each effect costs '):].strip('()')}; "
+                 "`ybuffer` against itself with no effect, and the fastest kernel for the effects "
+                 "against the fastest with none):", "",
+                 "| " + " | ".join(e[0]) + " |", "|---|--:|--:|---|--:|--:|"]
+        lines += ["| " + " | ".join(row) + " |" for row in e[1:]]
+        m = re.search(r"^Effects not called for cost nothing: .*$", md, re.M)
+        if m:
+            lines += ["", m.group(0)]
+        blocks["bench:effects"] = "\n".join(lines)
     return blocks
 
 
