@@ -274,9 +274,11 @@ $(BUILD)/pic/%.o: %.c
 	  -c $< -o $@
 
 # --no-undefined: the library names every library it needs, so a program links with -lretro.
+# Not under sanitizers: clang leaves their runtime to the executable.
 $(SO): $(PIC_OBJ)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(SAN) -shared -Wl,-soname,libretro.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LDLIBS)
+	$(Q)$(CC) $(SAN) -shared -Wl,-soname,libretro.so.$(SOVERSION) $(if $(SAN),,-Wl,--no-undefined) \
+	  -o $@ $^ $(LDLIBS)
 
 # help2man (Debian package help2man) writes the page from retro --help and --version, and
 # every subcommand's --help (scripts/man-include.sh).
