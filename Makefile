@@ -24,7 +24,7 @@ PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
 LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
-LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
+LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c)) $(wildcard src/mesh/*.c)
 CLI_SRC  := $(wildcard src/cli/*.c)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
