@@ -1,5 +1,6 @@
 /* The mesh family's kernels and modes against each other, its hard cases and its refusals. */
 #include "mesh_util.h"
+#include "retro.h"
 
 static unsigned random_mesh_fx(uint64_t *seed)
 {
@@ -174,19 +175,39 @@ Test(mesh_hard, angles_screens_distances_maps)
     mmap_free(&m);
 }
 
-/* The far plane is min(D, RETRO_MESH_MAX_FAR): every D beyond the cap gives the same frame. */
-Test(mesh_hard, far_plane_cap)
+/* D = 2^20 is capped (far plane min(D, RETRO_MESH_MAX_FAR)) and stays quick when the view
+ * allows block culling: one row at V = 1 with the horizon 5 rows up (pitch) sees only terrain
+ * with e/z in [-1.25, -1], so nothing beyond z = 121 for an eye 121 above the ground: every
+ * D from 200 on gives the same frame, with terrain in it. */
+Test(mesh_hard, huge_distance)
 {
-    enum { W = 16, H = 12 };
+    enum { W = 8, H = 1 };
     uint32_t a[W * H], b[W * H];
-    mmap_t m = mmap_random(4, 3, 100, 120);
-    player_t p = {1.5f, 2.5f, 0, 121, 0, 0, 0};
-    ctx_t c = {W, H, 4, RETRO_MESH_MAX_FAR, MSKY, m.h, m.c, a};
-    mrender_ok(RETRO_MESH_ZBUFFER, RETRO_MESH_BINARY32, &p, &c, NULL, 0);
-    c.distance = 1 << 20;
-    c.out = b;
-    mrender_ok(RETRO_MESH_ZBUFFER, RETRO_MESH_BINARY32, &p, &c, NULL, 0);
-    cr_assert(!memcmp(a, b, sizeof a));
+    mmap_t m = mmap_random(4, 3, 0, 120);
+    player_t p = {1.5f, 2.5f, 20, 121, 0, 0, 0};
+    retro_effects fx;
+    retro_effects_defaults(&fx);
+    fx.flags = RETRO_FX_HORIZON;
+    fx.pitch = 5;
+    const int Ds[] = {RETRO_MESH_MAX_FAR, RETRO_MESH_MAX_FAR + 1, 1 << 20, RETRO_MAX_DISTANCE};
+    ctx_t c = {W, H, 4, 200, MSKY, m.h, m.c, a};
+    for (int md = 0; md < RETRO_MESH_MODE_COUNT; md++) {
+        c.distance = 200;
+        c.out = a;
+        mrender_ok(RETRO_MESH_ZBUFFER, (retro_mesh_mode)md, &p, &c, &fx, 0);
+        int terrain = 0;
+        for (int i = 0; i < W * H; i++)
+            terrain += a[i] != MSKY;
+        cr_assert_gt(terrain, 0);
+        c.out = b;
+        for (size_t i = 0; i < sizeof Ds / sizeof *Ds; i++) {
+            c.distance = Ds[i];
+            mrender_ok(RETRO_MESH_ZBUFFER, (retro_mesh_mode)md, &p, &c, &fx, 0);
+            cr_assert(!memcmp(a, b, sizeof a), "D %d differs", Ds[i]);
+        }
+    }
+    c.distance = RETRO_MAX_DISTANCE + 1;
+    cr_assert_eq(mrender(RETRO_MESH_ZBUFFER, RETRO_MESH_BINARY32, &p, &c, &fx, 0, NULL), RETRO_MESH_EINVAL);
     mmap_free(&m);
 }
 

@@ -200,6 +200,9 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
         f->water_color = fx->water_color;
         f->alpha0 = fx->water_alpha0;
         f->alpha_per_unit = fx->water_alpha_per_unit;
+        /* block culling bounds the water plane too */
+        f->hmin = f->level < f->hmin ? f->level : f->hmin;
+        f->hmax = f->level > f->hmax ? f->level : f->hmax;
     }
     f->Ie = (int)floor(f->x0 - 0.5);
     f->Je = (int)floor(f->y0 - 0.5);
