@@ -38,6 +38,13 @@ static void triangle(retro_mesh_ctx *mc, const mesh_vert *g, const mesh_snap *s,
                      const double sx[3], const double sy[3], int I, int J, int water)
 {
     const mesh_frame *f = &mc->f;
+    mc->st.submitted++;
+    double det = orientation(f, &g[idx[0]], &g[idx[1]], &g[idx[2]]);
+    int drawn = (f->mfx & RETRO_MESH_FX_NOCULL) || det > 0;
+    if (!drawn)
+        mc->st.culled++;
+    if (!drawn && !water)
+        return; /* most back faces: nothing copied */
     mesh_tri t;
     for (int k = 0; k < 3; k++) {
         t.v[k] = g[idx[k]];
@@ -47,15 +54,11 @@ static void triangle(retro_mesh_ctx *mc, const mesh_vert *g, const mesh_snap *s,
     t.I = (int)(((int64_t)I % f->S + f->S) % f->S);
     t.J = (int)(((int64_t)J % f->S + f->S) % f->S);
     t.water = 0;
-    mc->st.submitted++;
-    double det = orientation(f, &t.v[0], &t.v[1], &t.v[2]);
     t.back = det < 0;
     if (water)
         water_tri(mc, &t);
-    if (!(f->mfx & RETRO_MESH_FX_NOCULL) && !(det > 0)) {
-        mc->st.culled++;
+    if (!drawn)
         return;
-    }
     const mesh_snap *s3[3] = {&s[idx[0]], &s[idx[1]], &s[idx[2]]};
     mesh_clip_and_draw(mc, &t, s3);
 }
