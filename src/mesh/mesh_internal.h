@@ -75,6 +75,11 @@ typedef struct {
     const mesh_tri *t;
 } mesh_sub;
 
+/* A water triangle kept for the water pass: eye position and opacity per vertex. */
+typedef struct {
+    double l[3], z[3], e[3], alpha[3];
+} mesh_water_tri;
+
 typedef struct {
     int64_t X, Y;
     int ok;             /* inside every plane: X, Y valid */
@@ -87,7 +92,7 @@ struct retro_mesh_ctx {
     size_t depth_cap;     /* bytes */
     mesh_vert *grid;      /* (MESH_BLOCK+1)^2 block vertices */
     mesh_snap *snap;
-    mesh_tri *water;      /* water triangles of the frame, sorted before drawing */
+    mesh_water_tri *water; /* water triangles of the frame, sorted before drawing */
     size_t water_n, water_cap;
     void *order;          /* water_key[order_cap] (mesh_render.c) */
     size_t order_cap;

@@ -55,7 +55,7 @@ void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t)
 {
     if (mc->water_n == mc->water_cap) {
         size_t cap = mc->water_cap ? 2 * mc->water_cap : 1024;
-        mesh_tri *w = realloc(mc->water, cap * sizeof *w);
+        mesh_water_tri *w = realloc(mc->water, cap * sizeof *w);
         if (!w) {
             mc->oom = 1;
             return;
@@ -63,7 +63,13 @@ void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t)
         mc->water = w;
         mc->water_cap = cap;
     }
-    mc->water[mc->water_n++] = *t;
+    mesh_water_tri *w = &mc->water[mc->water_n++];
+    for (int k = 0; k < 3; k++) {
+        w->l[k] = t->v[k].l;
+        w->z[k] = t->v[k].z;
+        w->e[k] = t->v[k].e;
+        w->alpha[k] = t->v[k].a[A_ALPHA];
+    }
 }
 
 typedef struct {
@@ -71,12 +77,41 @@ typedef struct {
     size_t seq; /* traversal order: ties keep it */
 } water_key;
 
-static int farther_first(const void *a, const void *b)
+/* a before b in the water pass: farther first, then traversal order (a total order, so any
+ * sorting algorithm gives the same sequence) */
+static int before(const water_key *a, const water_key *b)
 {
-    const water_key *x = a, *y = b;
-    if (x->key != y->key)
-        return x->key > y->key ? -1 : 1;
-    return x->seq < y->seq ? -1 : x->seq > y->seq;
+    return a->key != b->key ? a->key > b->key : a->seq < b->seq;
+}
+
+static void sift(water_key *o, size_t i, size_t n)
+{
+    for (;;) {
+        size_t c = 2 * i + 1;
+        if (c >= n)
+            return;
+        if (c + 1 < n && before(&o[c], &o[c + 1]))
+            c++;
+        if (!before(&o[i], &o[c]))
+            return;
+        water_key t = o[i];
+        o[i] = o[c];
+        o[c] = t;
+        i = c;
+    }
+}
+
+/* Heapsort in place: no allocation (the C library's qsort may allocate). */
+static void sort_keys(water_key *o, size_t n)
+{
+    for (size_t i = n / 2; i-- > 0;)
+        sift(o, i, n);
+    for (size_t end = n; end-- > 1;) {
+        water_key t = o[0];
+        o[0] = o[end];
+        o[end] = t;
+        sift(o, 0, end);
+    }
 }
 
 /* Back to front by the centroid's eye depth, each blended over what is behind it. */
@@ -97,13 +132,23 @@ void mesh_water_draw(retro_mesh_ctx *mc)
     }
     water_key *o = mc->order;
     for (size_t i = 0; i < n; i++) {
-        const mesh_tri *t = &mc->water[i];
-        o[i].key = rn(f, rn(f, rn(f, t->v[0].z + t->v[1].z) + t->v[2].z) / 3.0);
+        const mesh_water_tri *t = &mc->water[i];
+        o[i].key = rn(f, rn(f, rn(f, t->z[0] + t->z[1]) + t->z[2]) / 3.0);
         o[i].seq = i;
     }
-    qsort(o, n, sizeof *o, farther_first);
+    sort_keys(o, n);
+    mesh_tri tri;
+    memset(&tri, 0, sizeof tri);
+    tri.water = 1;
+    const mesh_tri *t = &tri;
     for (size_t i = 0; i < n; i++) {
-        const mesh_tri *t = &mc->water[o[i].seq];
+        const mesh_water_tri *w = &mc->water[o[i].seq];
+        for (int k = 0; k < 3; k++) {
+            tri.v[k].l = w->l[k];
+            tri.v[k].z = w->z[k];
+            tri.v[k].e = w->e[k];
+            tri.v[k].a[A_ALPHA] = w->alpha[k];
+        }
         mesh_snap s[3];
         const mesh_snap *s3[3] = {&s[0], &s[1], &s[2]};
         for (int k = 0; k < 3; k++) {
