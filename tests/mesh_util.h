@@ -167,10 +167,6 @@ static inline void mref_render(const player_t *p, const ctx_t *c, uint32_t *out)
                         int maybe = dmin < 0.02 || fabs(z - far) < 0.02 || fabs(z - 1) < 0.02;
                         if (!maybe && (z < 1 || z > far))
                             continue;
-#ifdef MREF_DEBUG
-                        if (at == MREF_DEBUG)
-                            fprintf(stderr, "I %d J %d t %d z %.6f dmin %.4f maybe %d best %.6f\n", I, J, t, z, dmin, maybe, best[at]);
-#endif
                         if (maybe) {
                             mz[at] = fmin(mz[at], z);
                             continue;

@@ -113,7 +113,6 @@ static inline double rn(const mesh_frame *f, double x)
 retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_mesh_mode mode,
                                 const player_t *p, const ctx_t *c, const retro_effects *fx,
                                 unsigned mfx);
-double mesh_vertex_height(const mesh_frame *f, int i, int j);
 void mesh_vertex_stage(const mesh_frame *f, int I, int J, mesh_vert *v);
 void mesh_plane_distances(const mesh_frame *f, const mesh_vert *v, double *d);
 void mesh_project(const mesh_frame *f, const mesh_vert *v, int64_t *X, int64_t *Y);

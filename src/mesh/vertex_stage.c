@@ -19,12 +19,6 @@ static double cell_height(const mesh_frame *f, size_t at)
     return rn(f, h + rn(f, (double)(f->h1[at] - f->h0[at]) * f->morph_t));
 }
 
-double mesh_vertex_height(const mesh_frame *f, int I, int J)
-{
-    int i = wrapi(I, f->S), j = wrapi(J, f->S);
-    return cell_height(f, (size_t)j * (size_t)f->S + (size_t)i);
-}
-
 /* The unit normal of one keyframe at (i, j): central differences as the shade bake. */
 static void normal(const mesh_frame *f, const uint8_t *h, int i, int j, double n[3])
 {
