@@ -32,7 +32,7 @@ LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 # The course API (render, draw_line, update_player, bonus_implemented) is kept out of libretro,
 # whose every exported name starts with retro_, so a program can define its own render().
 COURSE_SRC := src/course.c
-LIB_SRC  := $(filter-out src/cli/% $(COURSE_SRC),$(wildcard src/*.c))
+LIB_SRC  := $(filter-out src/cli/% $(COURSE_SRC),$(wildcard src/*.c)) $(wildcard src/mesh/*.c)
 # Peer algorithms (src/peer/): others' traversals timed and measured beside the kernels, in the
 # CLI and the benchmark only, never in the library or its kernel table.
 PEER_SRC := $(wildcard src/peer/*.c)

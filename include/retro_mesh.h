@@ -1,0 +1,94 @@
+/* retro mesh family: the voxel terrain as a triangle mesh through a rasterization pipeline.
+ *
+ * The image is defined by docs/MESH.md: vertex (i, j) at the cell centre (i + 0.5, j + 0.5)
+ * with height h(i, j) on the torus of period S, two triangles per grid square, the voxel
+ * family's camera (SEMANTICS.md), so a mesh frame overlays a voxel frame of the same pose.
+ * Self-contained: the kernel table will wrap retro_mesh_render() as family `mesh`.
+ */
+#ifndef RETRO_MESH_H
+#define RETRO_MESH_H
+
+#include <stdint.h>
+
+#include "render.h"
+#include "retro_scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct retro_mesh_ctx retro_mesh_ctx;
+
+/* A context owns every scratch buffer (depth buffer, vertex grid, water triangles); buffers
+ * only grow, so frames allocate nothing once the sizes are reached. NULL when out of memory. */
+retro_mesh_ctx *retro_mesh_ctx_new(void);
+void retro_mesh_ctx_free(retro_mesh_ctx *mc);
+
+typedef enum {
+    RETRO_MESH_BINARY32 = 0, /* the reference: binary32 throughout */
+    RETRO_MESH_BINARY64 = 1, /* the same formulas in binary64: the family's truth */
+    RETRO_MESH_INT = 2,      /* integer interpolation, depth and colour per fragment */
+    RETRO_MESH_MODE_COUNT
+} retro_mesh_mode;
+
+typedef enum {
+    RETRO_MESH_ZBUFFER = 0, /* reference: depth buffer, front to back in grid order */
+    RETRO_MESH_PAINTER = 1, /* no depth buffer: back to front in grid order */
+    RETRO_MESH_KERNEL_COUNT
+} retro_mesh_kernel;
+
+/* Mesh-only effects (bits above retro_scene.h's RETRO_FX_*, free to merge into that enum). */
+enum {
+    RETRO_MESH_FX_TEXTURE = 1u << 8,   /* colour map as a texture, bilinear between vertices */
+    RETRO_MESH_FX_GOURAUD = 1u << 9,   /* vertex colours interpolated */
+    RETRO_MESH_FX_WIREFRAME = 1u << 10, /* only the pixels along triangle edges */
+    RETRO_MESH_FX_NOCULL = 1u << 11,   /* back faces drawn too (the `cull` switch off) */
+    RETRO_MESH_FX_ALL = RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD | RETRO_MESH_FX_WIREFRAME |
+                        RETRO_MESH_FX_NOCULL
+};
+
+typedef struct retro_mesh_opts {
+    unsigned flags; /* RETRO_MESH_FX_* */
+} retro_mesh_opts;
+
+typedef struct retro_mesh_stats {
+    uint64_t submitted; /* triangles assembled from the squares of blocks not culled */
+    uint64_t culled;    /* of those, dropped as back faces */
+    uint64_t clipped_out; /* of those left, nothing inside the frustum after clipping */
+    uint64_t rasterized;  /* sub-triangles handed to scan conversion (after clipping) */
+    uint64_t fragments;   /* pixel centres covered (top-left rule) */
+    uint64_t written;     /* fragments that passed the depth test and were stored */
+} retro_mesh_stats;
+
+typedef enum {
+    RETRO_MESH_OK = 0,
+    RETRO_MESH_EINVAL = 1,     /* input outside the valid domain (message says which) */
+    RETRO_MESH_ENOMEM = 2,     /* scratch memory could not be reserved */
+    RETRO_MESH_EUNSUPPORTED = 3 /* an effect or mode this kernel cannot render (named) */
+} retro_mesh_err;
+
+/* Far-plane cap: the far plane is min(D, RETRO_MESH_MAX_FAR) (docs/MESH.md, "Limits"). */
+#define RETRO_MESH_MAX_FAR 4096
+/* Sub-pixel bits of the fixed-point screen coordinates. */
+#define RETRO_MESH_SUBPIXEL_BITS 8
+
+/* Renders one frame into c->out. fx (scene effects, may be NULL): fog, shade, water, morph,
+ * horizon; bilinear and lod are voxel effects and are refused. opts and stats may be NULL.
+ * Nothing in c->out is written on error. */
+retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, retro_mesh_mode mode,
+                                 const player_t *p, const ctx_t *c, const retro_effects *fx,
+                                 const retro_mesh_opts *opts, retro_mesh_stats *stats);
+
+/* One line describing the last error of mc ("" after success), naming the refused effect. */
+const char *retro_mesh_error(const retro_mesh_ctx *mc);
+const char *retro_mesh_mode_name(retro_mesh_mode mode);
+const char *retro_mesh_kernel_name(retro_mesh_kernel kernel);
+/* The scene effects (RETRO_FX_*) and mesh effects (RETRO_MESH_FX_*) kernel renders in mode. */
+unsigned retro_mesh_supported_fx(retro_mesh_kernel kernel, retro_mesh_mode mode);
+unsigned retro_mesh_supported_mesh_fx(retro_mesh_kernel kernel, retro_mesh_mode mode);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
