@@ -21,10 +21,28 @@
  * Each mode and effect set is one instantiation of chunk() with its choices as compile-time
  * constants, so a frame runs a loop with exactly the work it calls for: the plain exact loop
  * carries no effect code at all.
+ *
+ * Occlusion skipping (docs/SKIPPING.md): in mode exact, without and with fog, a frame that has
+ * a pyramid (f->pyr) walks each column nearest first instead, and asks retro_skip_column
+ * (src/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
+ * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
+ * and painting into retro_ybuffer_counts (the library holds that build too, under other names).
  */
 #include "kernels.h"
 #include "retro_internal.h"
 #include "retro_scene.h"
+#ifndef RETRO_SUBMISSION
+#include "hmax_pyramid.h"
+#endif
+
+#ifdef RETRO_COUNT_SAMPLES
+retro_sample_counts retro_ybuffer_counts;
+#define COUNT_EVAL() (retro_ybuffer_counts.evaluated++)
+#define COUNT_PAINT() (retro_ybuffer_counts.painting++)
+#else
+#define COUNT_EVAL() ((void)0)
+#define COUNT_PAINT() ((void)0)
+#endif
 
 enum { CHUNK = 256 };
 
@@ -124,9 +142,12 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
                 if (u < lo || u >= hi || *yb >= cap)
                     continue;
                 uint32_t color;
+                COUNT_EVAL();
                 int v = sample(f, kind, 0, 0, u, d, 0, 0, x, y, *yb, &color);
-                if (v > *yb)
+                if (v > *yb) {
+                    COUNT_PAINT();
                     *yb = span(out, W, H, u, *yb, v, color);
+                }
             }
             qx[d] = x;
             qy[d] = y;
@@ -147,6 +168,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
             float vfs[CHUNK];
             uint32_t cell[CHUNK];
             for (int u = lo; u < hi; u++) {
+                COUNT_EVAL();
                 const float px = x0 + fd * f->rx[u], py = y0 + fd * f->ry[u];
                 const uint32_t idx = (uint32_t)(retro_floor(py) & mask) << shift | (uint32_t)(retro_floor(px) & mask);
                 cell[u - c0] = idx;
@@ -158,6 +180,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
                 if (*yb >= cap || !(vf >= (float)(*yb + 1)))
                     continue;
                 int v = vf >= (float)H ? H : (int)vf;
+                COUNT_PAINT();
                 *yb = span(out, W, H, u, *yb, v, f->color_map[cell[u - c0]]);
             }
             continue;
@@ -167,9 +190,12 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
             if (*yb >= cap)
                 continue;
             uint32_t color;
+            COUNT_EVAL();
             int v = sample(f, kind, fog, bilinear, u, d, fd, kd, 0, 0, *yb, &color);
-            if (v > *yb)
+            if (v > *yb) {
+                COUNT_PAINT();
                 *yb = span(out, W, H, u, *yb, v, color);
+            }
         }
     }
     if (kind == KIND_COURSE) /* distances past the early exit still step over the chunk */
@@ -181,6 +207,45 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
     for (int u = c0; u < c1; u++)
         span(out, W, H, u, ybuf[u - c0], H, f->sky);
 }
+
+#ifndef RETRO_SUBMISSION
+/* Columns [c0, c1) of mode exact with skipping: each column nearest first, the pyramid probed
+ * before each run of samples (retro_skip_column), RETRO_SKIP_NEAR samples evaluated one by one
+ * after a probe that cannot skip. The same samples paint as in chunk(), in the same order per
+ * column, so the bytes are the same. */
+static inline __attribute__((always_inline)) void columns_skip(const retro_frame *frame, int c0, int c1,
+                                                               const int kind, const int fog)
+{
+    const retro_frame copy = *frame, *f = &copy;
+    const int W = f->W, H = f->H, D = f->D;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
+    for (int u = c0; u < c1; u++) {
+        retro_skip_col col;
+        retro_skip_col_init(&col, f, u);
+        int y = 0, probe = 1;
+        for (int d = 1; d < D && y < vcap[d];) {
+            if (d >= probe) {
+                int e = retro_skip_column(f->pyr, f, &col, d, D, y);
+                if (e > d) {
+                    d = e;
+                    continue;
+                }
+                probe = d + RETRO_SKIP_NEAR;
+            }
+            uint32_t color;
+            COUNT_EVAL();
+            int v = sample(f, kind, fog, 0, u, d, (float)d, f->kd[d], 0, 0, y, &color);
+            if (v > y) {
+                COUNT_PAINT();
+                y = span(out, W, H, u, y, v, color);
+            }
+            d++;
+        }
+        span(out, W, H, u, y, H, f->sky);
+    }
+}
+#endif
 
 typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
 #define CHUNK_FN(name, kind, fog, bilinear)                                                        \
@@ -194,6 +259,20 @@ CHUNK_FN(lod_plain, KIND_LOD, 0, 0)
 CHUNK_FN(truth, KIND_TRUTH, 0, 0)
 CHUNK_FN(fixed, KIND_FIXED, 0, 0)
 CHUNK_FN(course, KIND_COURSE, 0, 0)
+#ifndef RETRO_SUBMISSION
+#define SKIP_FN(name, kind, fog)                                                                   \
+    static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
+    {                                                                                              \
+        (void)qx;                                                                                  \
+        (void)qy;                                                                                  \
+        columns_skip(f, c0, c1, kind, fog);                                                        \
+    }
+SKIP_FN(skip_any, KIND_EXACT, 0)
+SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0)
+#ifndef RETRO_NO_EFFECTS
+SKIP_FN(skip_fog, KIND_EXACT, 1)
+#endif
+#endif
 #ifndef RETRO_NO_EFFECTS /* the benchmark builds it without, to show effect code costs nothing */
 CHUNK_FN(exact_fog, KIND_EXACT, 1, 0)
 CHUNK_FN(exact_bilinear, KIND_EXACT, 0, 1)
@@ -206,6 +285,16 @@ CHUNK_FN(lod_fog_bilinear, KIND_LOD, 1, 1)
 /* The instantiation for a frame: its mode, map size class and per-sample effects. */
 static chunk_fn chunk_for(const retro_frame *f)
 {
+#ifndef RETRO_SUBMISSION
+    if (f->pyr && f->mode == RETRO_MODE_EXACT) {
+        if (!f->fx)
+            return (f->S & (f->S - 1)) ? skip_any : skip_pow2;
+#ifndef RETRO_NO_EFFECTS
+        if (f->fx == RETRO_FX_FOG)
+            return skip_fog;
+#endif
+    }
+#endif
 #ifndef RETRO_NO_EFFECTS
     static const chunk_fn with_fx[2][3] = {
         {exact_fog, exact_bilinear, exact_fog_bilinear},
