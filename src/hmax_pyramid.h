@@ -50,6 +50,18 @@ void retro_pyramid_free(retro_pyramid *p);
 /* Forgets which map p was built from, so the next build recomputes it. */
 void retro_pyramid_stale(retro_pyramid *p);
 
+/* Counts of the counting build of the ybuffer kernel (retro_kernel_ybuffer_counted, in
+ * the library as an object of kernel_ybuffer.c compiled with RETRO_COUNT_SAMPLES). Global and
+ * unsynchronised: one thread at a time, reset by the caller. */
+typedef struct retro_sample_counts {
+    uint64_t evaluated; /* samples whose cell and row were computed */
+    uint64_t painting;  /* samples that raised their column's y-buffer */
+    uint64_t probes;    /* calls of retro_skip_column */
+    uint64_t windows;   /* windows it read */
+} retro_sample_counts;
+extern retro_sample_counts retro_ybuffer_counts;
+void retro_kernel_ybuffer_counted(const retro_frame *f, retro_ctx *rc);
+
 /* Per-column traversal state. */
 typedef struct retro_skip_col {
     float rx, ry;   /* the column's ray, as the kernel reads it */
@@ -66,9 +78,12 @@ RETRO_HELPER void retro_skip_col_init(retro_skip_col *c, const retro_frame *f, i
     c->level = RETRO_PYR_LMIN;
 }
 
-/* floor(q) mod S for the unwrapped floor I of a sample (retro_cell's integer part). */
-RETRO_HELPER int retro_skip_wrap(int I, int S)
+/* floor(q) mod S for the unwrapped floor I of a sample (retro_cell's integer part); pow2 when
+ * S is a power of two (two's complement: I & (S - 1) is the non-negative remainder). */
+RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
 {
+    if (pow2)
+        return I & (S - 1);
     int i = I % S;
     return i < 0 ? i + S : i;
 }
@@ -100,15 +115,22 @@ RETRO_HELPER int retro_skip_wrap(int I, int S)
  * The caller guarantees y < H (the vcap exit catches full columns). Levels go up after a
  * skip and down after a window that may paint; at RETRO_PYR_LMIN the probe gives up.
  */
-RETRO_HELPER int retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d,
-                                   int d_end, int y)
+static inline __attribute__((always_inline, unused)) int
+retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d, int d_end, int y,
+                  const int pow2)
 {
     const int S = f->S, lmax = p->lmax;
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
     const float rx = c->rx, ry = c->ry;
     const int64_t height = f->height;
     int L = c->level;
+#ifdef RETRO_COUNT_SAMPLES
+    retro_ybuffer_counts.probes++;
+#endif
     while (d < d_end) {
+#ifdef RETRO_COUNT_SAMPLES
+        retro_ybuffer_counts.windows++;
+#endif
         const int B = 1 << L;
         int len = 1 + (int)((float)(B - 1) * c->inv_r);
         int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
@@ -118,7 +140,7 @@ RETRO_HELPER int retro_skip_column(const retro_pyramid *p, const retro_frame *f,
         const int Imin = I0 < I1 ? I0 : I1, Jmin = J0 < J1 ? J0 : J1;
         const int wi = I0 < I1 ? I1 - I0 : I0 - I1, wj = J0 < J1 ? J1 - J0 : J0 - J1;
         if (wi <= B && wj <= B) {
-            const int bi = retro_skip_wrap(Imin, S) >> L, bj = retro_skip_wrap(Jmin, S) >> L;
+            const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
             const int64_t dh = (int64_t)p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi] - height;
             const float vf = f->kd[dh >= 0 ? d : d1] * (float)dh + half_h;
             if (!(vf >= need)) {
@@ -136,14 +158,5 @@ RETRO_HELPER int retro_skip_column(const retro_pyramid *p, const retro_frame *f,
     return d;
 }
 
-/* Sample counts of the counting build of the ybuffer kernel (retro_kernel_ybuffer_counted, in
- * the library as an object of kernel_ybuffer.c compiled with RETRO_COUNT_SAMPLES). Global and
- * unsynchronised: one thread at a time, reset by the caller. */
-typedef struct retro_sample_counts {
-    uint64_t evaluated; /* samples whose cell and row were computed */
-    uint64_t painting;  /* samples that raised their column's y-buffer */
-} retro_sample_counts;
-extern retro_sample_counts retro_ybuffer_counts;
-void retro_kernel_ybuffer_counted(const retro_frame *f, retro_ctx *rc);
 
 #endif

@@ -23,7 +23,7 @@
  * carries no effect code at all.
  *
  * Occlusion skipping (docs/SKIPPING.md): in mode exact, without and with fog, a frame that has
- * a pyramid (f->pyr) walks each column nearest first instead, and asks retro_skip_column
+ * a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_column
  * (src/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
  * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
  * and painting into retro_ybuffer_counts (the library holds that build too, under other names).
@@ -208,39 +208,60 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
         span(out, W, H, u, ybuf[u - c0], H, f->sky);
 }
 
+
 #ifndef RETRO_SUBMISSION
-/* Columns [c0, c1) of mode exact with skipping: each column nearest first, the pyramid probed
- * before each run of samples (retro_skip_column), RETRO_SKIP_NEAR samples evaluated one by one
- * after a probe that cannot skip. The same samples paint as in chunk(), in the same order per
- * column, so the bytes are the same. */
+/* Columns [c0, c1) of mode exact with skipping, each walked nearest first: the pyramid is
+ * probed (retro_skip_column) at every distance the walk reaches, and where it cannot skip the
+ * next RETRO_SKIP_NEAR samples are evaluated in two passes, their cells and vf first (sample()'s
+ * operations, no branch on a map load, so the loads overlap), then the y-buffer pass over them
+ * nearest first. Samples at or past the vcap exit may be evaluated in that batch but cannot
+ * paint (their v <= vcap <= y). Walking a column keeps it free of the per-distance cost of the
+ * columns that skip, which chunk() pays at every distance. Each column paints the same samples
+ * in the same order as in chunk(), so the bytes are the same. */
 static inline __attribute__((always_inline)) void columns_skip(const retro_frame *frame, int c0, int c1,
                                                                const int kind, const int fog)
 {
     const retro_frame copy = *frame, *f = &copy;
-    const int W = f->W, H = f->H, D = f->D;
+    const int W = f->W, H = f->H, D = f->D, S = f->S;
     const int *vcap = f->vcap;
+    const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
+    const int64_t height = f->height;
+    const uint8_t *hm = f->height_map;
     uint32_t *out = f->out;
     for (int u = c0; u < c1; u++) {
         retro_skip_col col;
         retro_skip_col_init(&col, f, u);
-        int y = 0, probe = 1;
-        for (int d = 1; d < D && y < vcap[d];) {
-            if (d >= probe) {
-                int e = retro_skip_column(f->pyr, f, &col, d, D, y);
-                if (e > d) {
-                    d = e;
+        const float rx = col.rx, ry = col.ry;
+        int y = 0, d = 1;
+        while (d < D && y < vcap[d]) {
+            int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2);
+            if (e > d) {
+                d = e;
+                continue;
+            }
+            const int n = D - d < RETRO_SKIP_NEAR ? D - d : RETRO_SKIP_NEAR;
+            uint32_t cell[RETRO_SKIP_NEAR];
+            float vfs[RETRO_SKIP_NEAR];
+            for (int t = 0; t < n; t++) {
+                const float fd = (float)(d + t), qx = x0 + fd * rx, qy = y0 + fd * ry;
+                uint32_t idx;
+                if (kind == KIND_EXACT_POW2)
+                    idx = (uint32_t)(retro_floor(qy) & (S - 1)) * (uint32_t)S + (uint32_t)(retro_floor(qx) & (S - 1));
+                else
+                    idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
+                cell[t] = idx;
+                vfs[t] = f->kd[d + t] * (float)(hm[idx] - height) + half_h;
+            }
+            for (int t = 0; t < n; t++) {
+                COUNT_EVAL();
+                if (!(vfs[t] >= (float)(y + 1)))
                     continue;
-                }
-                probe = d + RETRO_SKIP_NEAR;
-            }
-            uint32_t color;
-            COUNT_EVAL();
-            int v = sample(f, kind, fog, 0, u, d, (float)d, f->kd[d], 0, 0, y, &color);
-            if (v > y) {
+                const int v = vfs[t] >= (float)H ? H : (int)vfs[t];
+                const uint32_t c = f->color_map[cell[t]];
                 COUNT_PAINT();
-                y = span(out, W, H, u, y, v, color);
+                y = span(out, W, H, u, y, v, fog ? retro_fog(c, f->sky, f->fog[d + t]) : c);
             }
-            d++;
+            d += n;
         }
         span(out, W, H, u, y, H, f->sky);
     }
@@ -265,7 +286,7 @@ CHUNK_FN(course, KIND_COURSE, 0, 0)
     {                                                                                              \
         (void)qx;                                                                                  \
         (void)qy;                                                                                  \
-        columns_skip(f, c0, c1, kind, fog);                                                        \
+        columns_skip(f, c0, c1, kind, fog);                                                                                                            \
     }
 SKIP_FN(skip_any, KIND_EXACT, 0)
 SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0)

@@ -64,6 +64,7 @@ static int print_stats(render_job *j, const player_t *p)
     printf("samples: %.0f (W x (D-1)), skipping %s\n", all, f->pyr ? "on" : "off");
     printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
     printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
+    printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
     return 0;
 }
 
