@@ -123,7 +123,7 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
     const float rx = c->rx, ry = c->ry;
     const int64_t height = f->height;
-    int L = c->level;
+    int L = c->level, at = 0, I0 = 0, J0 = 0; /* the cell at distance at (0: none yet) */
 #ifdef RETRO_COUNT_SAMPLES
     retro_ybuffer_counts.probes++;
 #endif
@@ -134,9 +134,14 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
         const int B = 1 << L;
         int len = 1 + (int)((float)(B - 1) * c->inv_r);
         int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
-        const float f0 = (float)d, f1 = (float)d1;
-        const int I0 = retro_floor(x0 + f0 * rx), I1 = retro_floor(x0 + f1 * rx);
-        const int J0 = retro_floor(y0 + f0 * ry), J1 = retro_floor(y0 + f1 * ry);
+        if (at != d) { /* a finer level starts where the coarser one did */
+            const float f0 = (float)d;
+            I0 = retro_floor(x0 + f0 * rx);
+            J0 = retro_floor(y0 + f0 * ry);
+            at = d;
+        }
+        const float f1 = (float)d1;
+        const int I1 = retro_floor(x0 + f1 * rx), J1 = retro_floor(y0 + f1 * ry);
         const int Imin = I0 < I1 ? I0 : I1, Jmin = J0 < J1 ? J0 : J1;
         const int wi = I0 < I1 ? I1 - I0 : I0 - I1, wj = J0 < J1 ? J1 - J0 : J0 - J1;
         if (wi <= B && wj <= B) {

@@ -249,11 +249,11 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
                     idx = (uint32_t)(retro_floor(qy) & (S - 1)) * (uint32_t)S + (uint32_t)(retro_floor(qx) & (S - 1));
                 else
                     idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
+                COUNT_EVAL();
                 cell[t] = idx;
                 vfs[t] = f->kd[d + t] * (float)(hm[idx] - height) + half_h;
             }
-            for (int t = 0; t < n; t++) {
-                COUNT_EVAL();
+            for (int t = 0; t < n && y < H; t++) { /* a full column takes nothing more */
                 if (!(vfs[t] >= (float)(y + 1)))
                     continue;
                 const int v = vfs[t] >= (float)H ? H : (int)vfs[t];
