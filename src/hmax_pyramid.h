@@ -30,7 +30,8 @@
 enum {
     RETRO_PYR_LMIN = 2,   /* blocks of 4 cells: a run of ~3 distances, finer is not worth a load */
     RETRO_PYR_LMAX = 12,  /* blocks of 4096 cells */
-    RETRO_SKIP_NEAR = 4,  /* distances evaluated one by one after a probe that cannot skip */
+    RETRO_SKIP_NEAR = 4,  /* distances evaluated one by one after a probe that cannot skip, */
+    RETRO_SKIP_FAR = 32,  /* doubling up to this many while the probes keep failing */
 };
 
 typedef struct retro_pyramid {

@@ -232,16 +232,19 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
         retro_skip_col col;
         retro_skip_col_init(&col, f, u);
         const float rx = col.rx, ry = col.ry;
-        int y = 0, d = 1;
+        int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
         while (d < D && y < vcap[d]) {
             int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2);
             if (e > d) {
                 d = e;
+                batch = RETRO_SKIP_NEAR;
                 continue;
             }
-            const int n = D - d < RETRO_SKIP_NEAR ? D - d : RETRO_SKIP_NEAR;
-            uint32_t cell[RETRO_SKIP_NEAR];
-            float vfs[RETRO_SKIP_NEAR];
+            const int n = D - d < batch ? D - d : batch;
+            /* probes that keep failing (terrain that keeps rising) come less often */
+            batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
+            uint32_t cell[RETRO_SKIP_FAR];
+            float vfs[RETRO_SKIP_FAR];
             for (int t = 0; t < n; t++) {
                 const float fd = (float)(d + t), qx = x0 + fd * rx, qy = y0 + fd * ry;
                 uint32_t idx;
