@@ -63,6 +63,13 @@ typedef struct retro_sample_counts {
 extern retro_sample_counts retro_ybuffer_counts;
 void retro_kernel_ybuffer_counted(const retro_frame *f, retro_ctx *rc);
 
+/* Whether the ybuffer strip skips this frame: mode exact with a pyramid (any per-sample
+ * effects: fog changes colours only, bilinear is covered by the bound). */
+RETRO_HELPER int retro_skip_applies(const retro_frame *f)
+{
+    return f->pyr && f->mode == RETRO_MODE_EXACT;
+}
+
 /* Per-column traversal state. */
 typedef struct retro_skip_col {
     float rx, ry;   /* the column's ray, as the kernel reads it */
@@ -113,12 +120,18 @@ RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
  *    in float; floor and clamp are monotone), the sample kernel's own test. So when the check
  *    fails, no sample of the run paints, the y-buffer stays y across it, and the skipped
  *    samples are exactly samples that would have painted nothing.
+ * Bilinear (docs/EFFECTS.md) reads the cells floor(q - 1/2) and floor(q - 1/2) + 1 per axis, with
+ * q - 1/2 = fl(qx - 0.5f) as retro_bilinear_height computes it (monotone in qx, so in e), so
+ * the box grows by one cell per axis; its height, a convex combination of the four cells
+ * rounded a few times, exceeds their maximum by far less than 1 (frame.c's hmax + 1 rests on
+ * the same fact), so it is <= M + 1, and the row is computed from (float)(M + 1) through the
+ * sample's own dh (retro_bilinear_dh, monotone) and row operations.
  * The caller guarantees y < H (the vcap exit catches full columns). Levels go up after a
  * skip and down after a window that may paint; at RETRO_PYR_LMIN the probe gives up.
  */
 static inline __attribute__((always_inline, unused)) int
 retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d, int d_end, int y,
-                  const int pow2)
+                  const int pow2, const int bilinear)
 {
     const int S = f->S, lmax = p->lmax;
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
@@ -137,18 +150,25 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
         int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
         if (at != d) { /* a finer level starts where the coarser one did */
             const float f0 = (float)d;
-            I0 = retro_floor(x0 + f0 * rx);
-            J0 = retro_floor(y0 + f0 * ry);
+            I0 = retro_floor(bilinear ? x0 + f0 * rx - 0.5f : x0 + f0 * rx);
+            J0 = retro_floor(bilinear ? y0 + f0 * ry - 0.5f : y0 + f0 * ry);
             at = d;
         }
         const float f1 = (float)d1;
-        const int I1 = retro_floor(x0 + f1 * rx), J1 = retro_floor(y0 + f1 * ry);
+        const int I1 = retro_floor(bilinear ? x0 + f1 * rx - 0.5f : x0 + f1 * rx);
+        const int J1 = retro_floor(bilinear ? y0 + f1 * ry - 0.5f : y0 + f1 * ry);
         const int Imin = I0 < I1 ? I0 : I1, Jmin = J0 < J1 ? J0 : J1;
-        const int wi = I0 < I1 ? I1 - I0 : I0 - I1, wj = J0 < J1 ? J1 - J0 : J0 - J1;
+        /* bilinear reads the cells floor(q - 1/2) and one more on each axis */
+        const int wi = (I0 < I1 ? I1 - I0 : I0 - I1) + bilinear, wj = (J0 < J1 ? J1 - J0 : J0 - J1) + bilinear;
         if (wi <= B && wj <= B) {
             const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
-            const int64_t dh = (int64_t)p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi] - height;
-            const float vf = f->kd[dh >= 0 ? d : d1] * (float)dh + half_h;
+            const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+            float fdh;
+            if (bilinear) /* the sample's own dh of a height above any its rounding reaches */
+                fdh = retro_bilinear_dh((float)(M + 1), height);
+            else
+                fdh = (float)((int64_t)M - height);
+            const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;
             if (!(vf >= need)) {
                 d = d1 + 1;
                 if (L < lmax)

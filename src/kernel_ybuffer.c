@@ -22,7 +22,7 @@
  * constants, so a frame runs a loop with exactly the work it calls for: the plain exact loop
  * carries no effect code at all.
  *
- * Occlusion skipping (docs/SKIPPING.md): in mode exact, without and with fog, a frame that has
+ * Occlusion skipping (docs/SKIPPING.md): in mode exact, with any per-sample effects, a frame that has
  * a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_column
  * (src/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
  * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
@@ -219,7 +219,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
  * columns that skip, which chunk() pays at every distance. Each column paints the same samples
  * in the same order as in chunk(), so the bytes are the same. */
 static inline __attribute__((always_inline)) void columns_skip(const retro_frame *frame, int c0, int c1,
-                                                               const int kind, const int fog)
+                                                               const int kind, const int fog, const int bilinear)
 {
     const retro_frame copy = *frame, *f = &copy;
     const int W = f->W, H = f->H, D = f->D, S = f->S;
@@ -234,7 +234,7 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
         const float rx = col.rx, ry = col.ry;
         int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
         while (d < D && y < vcap[d]) {
-            int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2);
+            int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2, bilinear);
             if (e > d) {
                 d = e;
                 batch = RETRO_SKIP_NEAR;
@@ -243,6 +243,19 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
             const int n = D - d < batch ? D - d : batch;
             /* probes that keep failing (terrain that keeps rising) come less often */
             batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
+            if (bilinear) { /* four cells and a colour blend per sample: one pass */
+                for (int t = 0; t < n && y < H; t++) {
+                    uint32_t color;
+                    COUNT_EVAL();
+                    int v = sample(f, kind, fog, 1, u, d + t, (float)(d + t), f->kd[d + t], 0, 0, y, &color);
+                    if (v > y) {
+                        COUNT_PAINT();
+                        y = span(out, W, H, u, y, v, color);
+                    }
+                }
+                d += n;
+                continue;
+            }
             uint32_t cell[RETRO_SKIP_FAR];
             float vfs[RETRO_SKIP_FAR];
             for (int t = 0; t < n; t++) {
@@ -284,17 +297,19 @@ CHUNK_FN(truth, KIND_TRUTH, 0, 0)
 CHUNK_FN(fixed, KIND_FIXED, 0, 0)
 CHUNK_FN(course, KIND_COURSE, 0, 0)
 #ifndef RETRO_SUBMISSION
-#define SKIP_FN(name, kind, fog)                                                                   \
+#define SKIP_FN(name, kind, fog, bilinear)                                                         \
     static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
     {                                                                                              \
         (void)qx;                                                                                  \
         (void)qy;                                                                                  \
-        columns_skip(f, c0, c1, kind, fog);                                                                                                            \
+        columns_skip(f, c0, c1, kind, fog, bilinear);                                              \
     }
-SKIP_FN(skip_any, KIND_EXACT, 0)
-SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0)
+SKIP_FN(skip_any, KIND_EXACT, 0, 0)
+SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0, 0)
 #ifndef RETRO_NO_EFFECTS
-SKIP_FN(skip_fog, KIND_EXACT, 1)
+SKIP_FN(skip_fog, KIND_EXACT, 1, 0)
+SKIP_FN(skip_bilinear, KIND_EXACT, 0, 1)
+SKIP_FN(skip_fog_bilinear, KIND_EXACT, 1, 1)
 #endif
 #endif
 #ifndef RETRO_NO_EFFECTS /* the benchmark builds it without, to show effect code costs nothing */
@@ -310,13 +325,13 @@ CHUNK_FN(lod_fog_bilinear, KIND_LOD, 1, 1)
 static chunk_fn chunk_for(const retro_frame *f)
 {
 #ifndef RETRO_SUBMISSION
-    if (f->pyr && f->mode == RETRO_MODE_EXACT) {
-        if (!f->fx)
-            return (f->S & (f->S - 1)) ? skip_any : skip_pow2;
+    if (retro_skip_applies(f)) {
 #ifndef RETRO_NO_EFFECTS
-        if (f->fx == RETRO_FX_FOG)
-            return skip_fog;
+        static const chunk_fn skip_fx[3] = {skip_fog, skip_bilinear, skip_fog_bilinear};
+        if (f->fx)
+            return skip_fx[((f->fx & RETRO_FX_FOG) ? 1 : 0) + ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0) - 1];
 #endif
+        return (f->S & (f->S - 1)) ? skip_any : skip_pow2;
     }
 #endif
 #ifndef RETRO_NO_EFFECTS

@@ -267,17 +267,21 @@ Test(skipping, tiny_maps)
     rig_close(g);
 }
 
-/* Seeded random poses on the generated terrains, with and without fog. */
+/* Seeded random poses on the generated terrains, with no effect, fog, bilinear and both. */
 Test(skipping, random_poses_on_generated_maps)
 {
     trio *g = rig_open();
     static const struct { const char *style; int S; } maps[] = {
         {"alpine", 128}, {"islands", 100}, {"canyon", 200}, {"spike", 64}, {"checker", 45}};
-    retro_effects fog;
-    memset(&fog, 0, sizeof fog);
-    fog.flags = RETRO_FX_FOG;
-    fog.fog_start = 10;
-    fog.fog_end = 150;
+    retro_effects fx[3];
+    memset(fx, 0, sizeof fx);
+    fx[0].flags = RETRO_FX_FOG;
+    fx[1].flags = RETRO_FX_BILINEAR;
+    fx[2].flags = RETRO_FX_FOG | RETRO_FX_BILINEAR;
+    for (int i = 0; i < 3; i++) {
+        fx[i].fog_start = 10;
+        fx[i].fog_end = 150;
+    }
     uint64_t st = 2026;
     for (size_t mi = 0; mi < sizeof maps / sizeof maps[0]; mi++) {
         retro_map m;
@@ -291,7 +295,7 @@ Test(skipping, random_poses_on_generated_maps)
             int angle = (int)(rng_next(&st) % 360), z = (int)(rng_next(&st) % 320) - 20;
             int W = 8 + (int)(rng_next(&st) % 90), H = 4 + (int)(rng_next(&st) % 70);
             int D = 1 + (int)(rng_next(&st) % (unsigned)(3 * S));
-            check(g, maps[mi].style, &m, at(x, y, angle, z), W, H, D, (k & 1) ? &fog : NULL);
+            check(g, maps[mi].style, &m, at(x, y, angle, z), W, H, D, (k & 3) ? &fx[(k & 3) - 1] : NULL);
         }
         retro_map_free(&m);
     }
@@ -380,6 +384,7 @@ Test(skipping, probe_bound)
 {
     static const int sizes[] = {5, 6, 37, 64, 100, 129};
     uint64_t st = 99;
+    /* (bilinear on every other pair of queries: its box is a cell wider and its height M + 1) */
     long skipped = 0;
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         int S = sizes[si];
@@ -415,12 +420,25 @@ Test(skipping, probe_bound)
                     col.inv_r *= 1.0f + (float)(rng_next(&st) % 4);
                 if (col.level > f->pyr->lmax)
                     col.level = f->pyr->lmax;
-                int e = pow2 ? retro_skip_column(f->pyr, f, &col, d, D, yb, 1)
-                             : retro_skip_column(f->pyr, f, &col, d, D, yb, 0);
+                int bil = (q >> 1) & 1, e;
+                if (pow2)
+                    e = bil ? retro_skip_column(f->pyr, f, &col, d, D, yb, 1, 1)
+                            : retro_skip_column(f->pyr, f, &col, d, D, yb, 1, 0);
+                else
+                    e = bil ? retro_skip_column(f->pyr, f, &col, d, D, yb, 0, 1)
+                            : retro_skip_column(f->pyr, f, &col, d, D, yb, 0, 0);
                 cr_assert(e >= d && e <= D, "skip from %d returned %d (D %d)", d, e, D);
                 for (int dd = d; dd < e; dd++) {
-                    size_t idx = retro_exact_sample(f, u, dd);
-                    int v = retro_exact_row(f->kd[dd], f->half_h, H, f->height_map[idx] - f->height);
+                    int v;
+                    if (bil) {
+                        retro_bilerp b;
+                        float qx = f->x0 + (float)dd * f->rx[u], qy = f->y0 + (float)dd * f->ry[u];
+                        float hf = retro_bilinear_height(f, qx, qy, &b);
+                        v = retro_exact_row_f(f->kd[dd], f->half_h, H, retro_bilinear_dh(hf, f->height));
+                    } else {
+                        size_t idx = retro_exact_sample(f, u, dd);
+                        v = retro_exact_row(f->kd[dd], f->half_h, H, f->height_map[idx] - f->height);
+                    }
                     cr_assert_leq(v, yb, "S %d: column %d skipped distance %d of [%d, %d) with row %d above %d", S, u,
                                   dd, d, e, v, yb);
                 }
