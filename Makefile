@@ -42,7 +42,8 @@ COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(wildcard src/kernel_*.c)
 
-LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+# The ybuffer kernel once more, counting the samples it evaluates (retro render --stats).
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/ybuffer_counted.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
@@ -101,6 +102,12 @@ $(BUILD)/count/%.o: src/%.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting writes)")
 	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) -DRETRO_COUNT_WRITES -c $< -o $@
+
+$(BUILD)/src/ybuffer_counted.o: src/kernel_ybuffer.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $< (counting samples)")
+	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_COUNT_SAMPLES -Dretro_kernel_ybuffer=retro_kernel_ybuffer_counted \
+	  -Dretro_strip_ybuffer=retro_strip_ybuffer_counted -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	$(Q)rm -f $@ && ar rcs $@ $^

@@ -90,6 +90,9 @@ typedef struct retro_frame {
      * at the n'-th distance (distance n, or dist[n] in mode lod); no sample from there on
      * can rise above it. The entry past the last distance is 0. */
     const int *vcap;
+    /* mode exact: the map's maximum-height pyramid when occlusion skipping is on
+     * (src/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
+    const struct retro_pyramid *pyr;
 } retro_frame;
 
 /* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
@@ -129,6 +132,11 @@ typedef struct retro_ctx {
     const uint32_t *simd_color_map;
     int simd_map_size;
     int simd_cells_ok;                  /* every colour had a zero low byte: packing is lossless */
+    /* Occlusion skipping (docs/SKIPPING.md): the height map's maximum pyramid, cached per map
+     * pointer like the maximum; no_skip = 1 turns skipping off (the same bytes, every sample
+     * evaluated), for measuring what it saves. */
+    struct retro_pyramid *pyr;
+    int no_skip;
 } retro_ctx;
 
 void retro_ctx_init(retro_ctx *rc);

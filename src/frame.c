@@ -6,6 +6,9 @@
 #include "retro.h"
 #include "retro_internal.h"
 #include "retro_scene.h"
+#ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
+#include "hmax_pyramid.h"
+#endif
 
 void retro_ctx_init(retro_ctx *rc)
 {
@@ -40,6 +43,9 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->simd_cells);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
+    if (rc->pyr)
+        retro_pyramid_free(rc->pyr);
+    free(rc->pyr);
 #endif
     memset(rc, 0, sizeof *rc);
 }
@@ -48,7 +54,29 @@ void retro_ctx_map_changed(retro_ctx *rc)
 {
     rc->hmax_map = NULL;
     rc->simd_height_map = NULL;
+#ifndef RETRO_SUBMISSION
+    if (rc->pyr)
+        retro_pyramid_stale(rc->pyr);
+#endif
 }
+
+#ifndef RETRO_SUBMISSION
+/* The pyramid for a frame of mode exact that may skip: built when the map is new; NULL when
+ * skipping is off, the map too small to have levels, or the memory short (-1). */
+static int skip_pyramid(retro_ctx *rc, const uint8_t *hm, int S, const struct retro_pyramid **out)
+{
+    *out = NULL;
+    if (rc->no_skip)
+        return 0;
+    if (!rc->pyr && !(rc->pyr = calloc(1, sizeof *rc->pyr)))
+        return -1;
+    if (retro_pyramid_build(rc->pyr, hm, S))
+        return -1;
+    if (rc->pyr->lmax >= RETRO_PYR_LMIN)
+        *out = rc->pyr;
+    return 0;
+}
+#endif
 
 /* Grows a buffer to n elements; memory only ever grows so steady-state frames never allocate. */
 static int grow(void **buf, size_t n, size_t elem)
@@ -370,6 +398,10 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     case RETRO_MODE_FIXED: setup_fixed(rc, f, p); break;
     default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
+#ifndef RETRO_SUBMISSION
+    if (mode == RETRO_MODE_EXACT && skip_pyramid(rc, hm, S, &f->pyr))
+        return RETRO_ENOMEM;
+#endif
     return RETRO_OK;
 }
 

@@ -21,10 +21,28 @@
  * Each mode and effect set is one instantiation of chunk() with its choices as compile-time
  * constants, so a frame runs a loop with exactly the work it calls for: the plain exact loop
  * carries no effect code at all.
+ *
+ * Occlusion skipping (docs/SKIPPING.md): in mode exact, with any per-sample effects, a frame that has
+ * a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_column
+ * (src/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
+ * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
+ * and painting into retro_ybuffer_counts (the library holds that build too, under other names).
  */
 #include "kernels.h"
 #include "retro_internal.h"
 #include "retro_scene.h"
+#ifndef RETRO_SUBMISSION
+#include "hmax_pyramid.h"
+#endif
+
+#ifdef RETRO_COUNT_SAMPLES
+retro_sample_counts retro_ybuffer_counts;
+#define COUNT_EVAL() (retro_ybuffer_counts.evaluated++)
+#define COUNT_PAINT() (retro_ybuffer_counts.painting++)
+#else
+#define COUNT_EVAL() ((void)0)
+#define COUNT_PAINT() ((void)0)
+#endif
 
 enum { CHUNK = 256 };
 
@@ -124,9 +142,12 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
                 if (u < lo || u >= hi || *yb >= cap)
                     continue;
                 uint32_t color;
+                COUNT_EVAL();
                 int v = sample(f, kind, 0, 0, u, d, 0, 0, x, y, *yb, &color);
-                if (v > *yb)
+                if (v > *yb) {
+                    COUNT_PAINT();
                     *yb = span(out, W, H, u, *yb, v, color);
+                }
             }
             qx[d] = x;
             qy[d] = y;
@@ -147,6 +168,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
             float vfs[CHUNK];
             uint32_t cell[CHUNK];
             for (int u = lo; u < hi; u++) {
+                COUNT_EVAL();
                 const float px = x0 + fd * f->rx[u], py = y0 + fd * f->ry[u];
                 const uint32_t idx = (uint32_t)(retro_floor(py) & mask) << shift | (uint32_t)(retro_floor(px) & mask);
                 cell[u - c0] = idx;
@@ -158,6 +180,7 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
                 if (*yb >= cap || !(vf >= (float)(*yb + 1)))
                     continue;
                 int v = vf >= (float)H ? H : (int)vf;
+                COUNT_PAINT();
                 *yb = span(out, W, H, u, *yb, v, f->color_map[cell[u - c0]]);
             }
             continue;
@@ -167,9 +190,12 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
             if (*yb >= cap)
                 continue;
             uint32_t color;
+            COUNT_EVAL();
             int v = sample(f, kind, fog, bilinear, u, d, fd, kd, 0, 0, *yb, &color);
-            if (v > *yb)
+            if (v > *yb) {
+                COUNT_PAINT();
                 *yb = span(out, W, H, u, *yb, v, color);
+            }
         }
     }
     if (kind == KIND_COURSE) /* distances past the early exit still step over the chunk */
@@ -181,6 +207,82 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
     for (int u = c0; u < c1; u++)
         span(out, W, H, u, ybuf[u - c0], H, f->sky);
 }
+
+
+#ifndef RETRO_SUBMISSION
+/* Columns [c0, c1) of mode exact with skipping, each walked nearest first: the pyramid is
+ * probed (retro_skip_column) at every distance the walk reaches, and where it cannot skip the
+ * next RETRO_SKIP_NEAR samples are evaluated in two passes, their cells and vf first (sample()'s
+ * operations, no branch on a map load, so the loads overlap), then the y-buffer pass over them
+ * nearest first. Samples at or past the vcap exit may be evaluated in that batch but cannot
+ * paint (their v <= vcap <= y). Walking a column keeps it free of the per-distance cost of the
+ * columns that skip, which chunk() pays at every distance. Each column paints the same samples
+ * in the same order as in chunk(), so the bytes are the same. */
+static inline __attribute__((always_inline)) void columns_skip(const retro_frame *frame, int c0, int c1,
+                                                               const int kind, const int fog, const int bilinear)
+{
+    const retro_frame copy = *frame, *f = &copy;
+    const int W = f->W, H = f->H, D = f->D, S = f->S;
+    const int *vcap = f->vcap;
+    const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
+    const int64_t height = f->height;
+    const uint8_t *hm = f->height_map;
+    uint32_t *out = f->out;
+    for (int u = c0; u < c1; u++) {
+        retro_skip_col col;
+        retro_skip_col_init(&col, f, u);
+        const float rx = col.rx, ry = col.ry;
+        int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
+        while (d < D && y < vcap[d]) {
+            int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2, bilinear);
+            if (e > d) {
+                d = e;
+                batch = RETRO_SKIP_NEAR;
+                continue;
+            }
+            const int n = D - d < batch ? D - d : batch;
+            /* probes that keep failing (terrain that keeps rising) come less often */
+            batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
+            if (bilinear) { /* four cells and a colour blend per sample: one pass */
+                for (int t = 0; t < n && y < H; t++) {
+                    uint32_t color;
+                    COUNT_EVAL();
+                    int v = sample(f, kind, fog, 1, u, d + t, (float)(d + t), f->kd[d + t], 0, 0, y, &color);
+                    if (v > y) {
+                        COUNT_PAINT();
+                        y = span(out, W, H, u, y, v, color);
+                    }
+                }
+                d += n;
+                continue;
+            }
+            uint32_t cell[RETRO_SKIP_FAR];
+            float vfs[RETRO_SKIP_FAR];
+            for (int t = 0; t < n; t++) {
+                const float fd = (float)(d + t), qx = x0 + fd * rx, qy = y0 + fd * ry;
+                uint32_t idx;
+                if (kind == KIND_EXACT_POW2)
+                    idx = (uint32_t)(retro_floor(qy) & (S - 1)) * (uint32_t)S + (uint32_t)(retro_floor(qx) & (S - 1));
+                else
+                    idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
+                COUNT_EVAL();
+                cell[t] = idx;
+                vfs[t] = f->kd[d + t] * (float)(hm[idx] - height) + half_h;
+            }
+            for (int t = 0; t < n && y < H; t++) { /* a full column takes nothing more */
+                if (!(vfs[t] >= (float)(y + 1)))
+                    continue;
+                const int v = vfs[t] >= (float)H ? H : (int)vfs[t];
+                const uint32_t c = f->color_map[cell[t]];
+                COUNT_PAINT();
+                y = span(out, W, H, u, y, v, fog ? retro_fog(c, f->sky, f->fog[d + t]) : c);
+            }
+            d += n;
+        }
+        span(out, W, H, u, y, H, f->sky);
+    }
+}
+#endif
 
 typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
 #define CHUNK_FN(name, kind, fog, bilinear)                                                        \
@@ -194,6 +296,22 @@ CHUNK_FN(lod_plain, KIND_LOD, 0, 0)
 CHUNK_FN(truth, KIND_TRUTH, 0, 0)
 CHUNK_FN(fixed, KIND_FIXED, 0, 0)
 CHUNK_FN(course, KIND_COURSE, 0, 0)
+#ifndef RETRO_SUBMISSION
+#define SKIP_FN(name, kind, fog, bilinear)                                                         \
+    static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
+    {                                                                                              \
+        (void)qx;                                                                                  \
+        (void)qy;                                                                                  \
+        columns_skip(f, c0, c1, kind, fog, bilinear);                                              \
+    }
+SKIP_FN(skip_any, KIND_EXACT, 0, 0)
+SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0, 0)
+#ifndef RETRO_NO_EFFECTS
+SKIP_FN(skip_fog, KIND_EXACT, 1, 0)
+SKIP_FN(skip_bilinear, KIND_EXACT, 0, 1)
+SKIP_FN(skip_fog_bilinear, KIND_EXACT, 1, 1)
+#endif
+#endif
 #ifndef RETRO_NO_EFFECTS /* the benchmark builds it without, to show effect code costs nothing */
 CHUNK_FN(exact_fog, KIND_EXACT, 1, 0)
 CHUNK_FN(exact_bilinear, KIND_EXACT, 0, 1)
@@ -206,6 +324,16 @@ CHUNK_FN(lod_fog_bilinear, KIND_LOD, 1, 1)
 /* The instantiation for a frame: its mode, map size class and per-sample effects. */
 static chunk_fn chunk_for(const retro_frame *f)
 {
+#ifndef RETRO_SUBMISSION
+    if (retro_skip_applies(f)) {
+#ifndef RETRO_NO_EFFECTS
+        static const chunk_fn skip_fx[3] = {skip_fog, skip_bilinear, skip_fog_bilinear};
+        if (f->fx)
+            return skip_fx[((f->fx & RETRO_FX_FOG) ? 1 : 0) + ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0) - 1];
+#endif
+        return (f->S & (f->S - 1)) ? skip_any : skip_pow2;
+    }
+#endif
 #ifndef RETRO_NO_EFFECTS
     static const chunk_fn with_fx[2][3] = {
         {exact_fog, exact_bilinear, exact_fog_bilinear},

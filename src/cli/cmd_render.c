@@ -1,8 +1,12 @@
 /* retro render: one frame of a map or a scene with any kernel in any mode. */
+#include <inttypes.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "hmax_pyramid.h"
+#include "kernels.h"
 #include "scene_args.h"
 
 static void help(void)
@@ -28,6 +32,10 @@ static void help(void)
            "  --sky HEX   sky colour RRGGBB (default 66a3ff)\n"
            "  --isa L     highest ISA level to use: none, sse2, avx2, avx512 (also RETRO_ISA)\n"
            "  --threads N threads for threaded kernels (default OMP_NUM_THREADS or all cores)\n"
+           "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
+           "              image is the same, only slower\n"
+           "  --stats     also print the samples the ybuffer kernel evaluates and those that\n"
+           "              paint, and their share of the frame's samples (W x (D-1))\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n");
 }
 
@@ -39,12 +47,48 @@ static int render_extra(void *user, const char *a, const char *v)
     return 1;
 }
 
+/* The frame rendered again by the counting build of ybuffer (the same bytes, into the same
+ * buffer), and its counts. Returns 0 or CLI_EBADINPUT. */
+static int print_stats(render_job *j, const player_t *p)
+{
+    retro_kernel counted = *retro_kernel_find("ybuffer");
+    counted.fn = retro_kernel_ybuffer_counted;
+    memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
+    retro_err e = retro_render(&j->rc, &counted, j->mode, p, &j->c);
+    if (e)
+        return cli_error("render", "%s", retro_strerror(e));
+    const retro_frame *f = &j->rc.frame;
+    int n = f->mode == RETRO_MODE_LOD ? f->ndist : f->D;
+    double all = (double)f->W * (double)(n > 1 ? n - 1 : 0);
+    const retro_sample_counts *s = &retro_ybuffer_counts;
+    printf("samples: %.0f (W x (D-1)), skipping %s\n", all, retro_skip_applies(f) ? "on" : "off");
+    printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
+    printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
+    printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
+    return 0;
+}
+
 int cmd_render(int argc, char **argv)
 {
     const char *out_path = NULL;
     render_opts o;
     render_opts_init(&o);
-    int r = render_args("render", "MAP", argc, argv, &o, render_extra, &out_path, help);
+    /* The two flags without a value are taken out before the shared parser sees argv. */
+    int no_skip = 0, stats = 0, n = 0;
+    char **args = malloc(((size_t)argc + 1) * sizeof *args);
+    if (!args)
+        return cli_error("render", "out of memory");
+    for (int i = 0; i < argc; i++) {
+        if (i > 0 && !strcmp(argv[i], "--no-skip"))
+            no_skip = 1;
+        else if (i > 0 && !strcmp(argv[i], "--stats"))
+            stats = 1;
+        else
+            args[n++] = argv[i];
+    }
+    args[n] = NULL;
+    int r = render_args("render", "MAP", n, args, &o, render_extra, &out_path, help);
+    free(args);
     if (r)
         return r == 1 ? 0 : r;
     if (!out_path)
@@ -53,9 +97,12 @@ int cmd_render(int argc, char **argv)
     render_job j;
     if (job_open("render", &o, &j))
         return CLI_EBADINPUT;
+    j.rc.no_skip = no_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
     int status = job_write("render", &j, &p, out_path);
+    if (!status && stats)
+        status = print_stats(&j, &p);
     job_close(&j);
     return status;
 }

@@ -1,0 +1,188 @@
+/* Exact occlusion skipping (docs/SKIPPING.md): a maximum-height pyramid of the map, built once
+ * per map, and the per-column traversal that jumps over runs of distances none of whose
+ * samples can rise above the column's y-buffer.
+ *
+ * Level L (RETRO_PYR_LMIN <= L <= lmax) cuts the S x S torus into blocks of B = 2^L cells per
+ * side (the last block of a side is partial when B does not divide S) and stores, for block
+ * (bi, bj), win = the maximum height over the blocks A(bi) x A(bj) with
+ *     A(b) = {b, (b + 1) mod n}, plus block 0 when B does not divide S and b = n - 2,
+ * n = ceil(S / B). Window lemma: for a cell c in block b and 0 <= w <= B, the cells
+ * c, c+1, .., c+w (mod S) all lie in the blocks A(b). Without wrap (c + w < S) they lie in
+ * [bB, (b+2)B) ∩ [0, S), blocks b and b + 1. With wrap, c >= S - B, and the cells past the
+ * seam are 0..c+w-S <= B-1, block 0; the cells before it lie in blocks b..n-1. If B divides S,
+ * c >= S - B puts b = n - 1, so {n-1, 0} = A(b). If not, block(S - B) = n - 2, so b is n - 2
+ * ({n-2, n-1, 0} = A(n-2)) or n - 1 ({n-1, 0}). So any box of cells whose unwrapped floor
+ * indices span at most B per axis is covered by the one window at the block of its smallest
+ * corner, taken mod S: one load bounds every height in the box.
+ *
+ * The traversal (retro_skip_column) needs only that bound and the monotonicity proved at
+ * retro_skip_column; see there. Single-threaded state per column, read-only pyramid: any
+ * number of threads may share one pyramid.
+ */
+#ifndef RETRO_HMAX_PYRAMID_H
+#define RETRO_HMAX_PYRAMID_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "retro_internal.h"
+
+enum {
+    RETRO_PYR_LMIN = 2,   /* blocks of 4 cells: a run of ~3 distances, finer is not worth a load */
+    RETRO_PYR_LMAX = 12,  /* blocks of 4096 cells */
+    RETRO_SKIP_NEAR = 4,  /* distances evaluated one by one after a probe that cannot skip, */
+    RETRO_SKIP_FAR = 32,  /* doubling up to this many while the probes keep failing */
+};
+
+typedef struct retro_pyramid {
+    const uint8_t *map;   /* the height map it was built from (NULL: none built) */
+    int S;
+    int lmax;             /* levels RETRO_PYR_LMIN..lmax exist; lmax < LMIN: none (S <= 4) */
+    int n[RETRO_PYR_LMAX + 1];            /* blocks per side at level L */
+    const uint8_t *win[RETRO_PYR_LMAX + 1]; /* [n*n] window maxima at level L, row-major */
+    uint8_t *mem;         /* every level's windows, then build scratch */
+    size_t cap;
+} retro_pyramid;
+
+/* Makes p the pyramid of map h (S x S) unless it already is. Allocates only when the map is
+ * new and larger than any before. Returns 0, or -1 when out of memory (p then holds none). */
+int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S);
+void retro_pyramid_free(retro_pyramid *p);
+/* Forgets which map p was built from, so the next build recomputes it. */
+void retro_pyramid_stale(retro_pyramid *p);
+
+/* Counts of the counting build of the ybuffer kernel (retro_kernel_ybuffer_counted, in
+ * the library as an object of kernel_ybuffer.c compiled with RETRO_COUNT_SAMPLES). Global and
+ * unsynchronised: one thread at a time, reset by the caller. */
+typedef struct retro_sample_counts {
+    uint64_t evaluated; /* samples whose cell and row were computed */
+    uint64_t painting;  /* samples that raised their column's y-buffer */
+    uint64_t probes;    /* calls of retro_skip_column */
+    uint64_t windows;   /* windows it read */
+} retro_sample_counts;
+extern retro_sample_counts retro_ybuffer_counts;
+void retro_kernel_ybuffer_counted(const retro_frame *f, retro_ctx *rc);
+
+/* Whether the ybuffer strip skips this frame: mode exact with a pyramid (any per-sample
+ * effects: fog changes colours only, bilinear is covered by the bound). */
+RETRO_HELPER int retro_skip_applies(const retro_frame *f)
+{
+    return f->pyr && f->mode == RETRO_MODE_EXACT;
+}
+
+/* Per-column traversal state. */
+typedef struct retro_skip_col {
+    float rx, ry;   /* the column's ray, as the kernel reads it */
+    float inv_r;    /* 1 / max(|rx|, |ry|) (an estimate only: every run is confirmed) */
+    int level;      /* the level the next probe starts at */
+} retro_skip_col;
+
+RETRO_HELPER void retro_skip_col_init(retro_skip_col *c, const retro_frame *f, int u)
+{
+    c->rx = f->rx[u];
+    c->ry = f->ry[u];
+    float ax = fabsf(c->rx), ay = fabsf(c->ry), r = ax > ay ? ax : ay;
+    c->inv_r = r > 0.0f ? 1.0f / r : 1.0f; /* |r| >= |(cs, sn)| / sqrt 2 > 0.7 in fact */
+    c->level = RETRO_PYR_LMIN;
+}
+
+/* floor(q) mod S for the unwrapped floor I of a sample (retro_cell's integer part); pow2 when
+ * S is a power of two (two's complement: I & (S - 1) is the non-negative remainder). */
+RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
+{
+    if (pow2)
+        return I & (S - 1);
+    int i = I % S;
+    return i < 0 ? i + S : i;
+}
+
+/* The first distance in [d, d_end) whose sample in this column may rise above y; d_end when
+ * none may. Every distance it skips has v <= y, so it cannot paint.
+ *
+ * Proof. A run [d, d1] is skipped only when the check below passes for it:
+ * 1. Positions. For e in [d, d1], qx(e) = x0 + (float)e * rx with (float)e exact (e < 2^24)
+ *    and each operation rounded to nearest: rounding is monotone, so e -> (float)e * rx is
+ *    monotone (non-decreasing for rx >= 0, non-increasing otherwise) and so is x0 + that.
+ *    These are the kernel's very operations (-ffp-contract=off everywhere), so qx(e) lies
+ *    between the values computed here at d and d1, and floor(qx(e)) between I0 and I1,
+ *    computed as the kernel computes them (retro_floor; |q| < 2^31 for valid frames). y alike.
+ * 2. Cells. The kernel's cell is (floor(qx) mod S, floor(qy) mod S), the same integer
+ *    remainder in the power-of-two path. The box [min I, max I] x [min J, max J] is confirmed
+ *    here to span at most B per axis (the run length is only an estimate, so rounding at block
+ *    edges or at large d cannot break this), and by the window lemma the window of the block
+ *    holding (min I mod S, min J mod S) is >= the height of every cell the run samples, the
+ *    wrap of the torus included.
+ * 3. Rows. v(h, e) = clamp(floor(kd[e] * (float)(h - height) + half_h)) is non-decreasing in h
+ *    (each step is monotone and kd > 0). kd[e] = half_w / (float)e is non-increasing in e, so
+ *    for dh = M - height >= 0 the row of M is largest at e = d, and for dh < 0 at e = d1.
+ *    Hence every sample of the run has v <= v(M, d or d1) =: vm.
+ * 4. No paint. For y < H, vm > y exactly when vf >= (float)(y + 1) (y + 1 <= 16384 is exact
+ *    in float; floor and clamp are monotone), the sample kernel's own test. So when the check
+ *    fails, no sample of the run paints, the y-buffer stays y across it, and the skipped
+ *    samples are exactly samples that would have painted nothing.
+ * Bilinear (docs/EFFECTS.md) reads the cells floor(q - 1/2) and floor(q - 1/2) + 1 per axis, with
+ * q - 1/2 = fl(qx - 0.5f) as retro_bilinear_height computes it (monotone in qx, so in e), so
+ * the box grows by one cell per axis; its height, a convex combination of the four cells
+ * rounded a few times, exceeds their maximum by far less than 1 (frame.c's hmax + 1 rests on
+ * the same fact), so it is <= M + 1, and the row is computed from (float)(M + 1) through the
+ * sample's own dh (retro_bilinear_dh, monotone) and row operations.
+ * The caller guarantees y < H (the vcap exit catches full columns). Levels go up after a
+ * skip and down after a window that may paint; at RETRO_PYR_LMIN the probe gives up.
+ */
+static inline __attribute__((always_inline, unused)) int
+retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d, int d_end, int y,
+                  const int pow2, const int bilinear)
+{
+    const int S = f->S, lmax = p->lmax;
+    const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
+    const float rx = c->rx, ry = c->ry;
+    const int64_t height = f->height;
+    int L = c->level, at = 0, I0 = 0, J0 = 0; /* the cell at distance at (0: none yet) */
+#ifdef RETRO_COUNT_SAMPLES
+    retro_ybuffer_counts.probes++;
+#endif
+    while (d < d_end) {
+#ifdef RETRO_COUNT_SAMPLES
+        retro_ybuffer_counts.windows++;
+#endif
+        const int B = 1 << L;
+        int len = 1 + (int)((float)(B - 1) * c->inv_r);
+        int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
+        if (at != d) { /* a finer level starts where the coarser one did */
+            const float f0 = (float)d;
+            I0 = retro_floor(bilinear ? x0 + f0 * rx - 0.5f : x0 + f0 * rx);
+            J0 = retro_floor(bilinear ? y0 + f0 * ry - 0.5f : y0 + f0 * ry);
+            at = d;
+        }
+        const float f1 = (float)d1;
+        const int I1 = retro_floor(bilinear ? x0 + f1 * rx - 0.5f : x0 + f1 * rx);
+        const int J1 = retro_floor(bilinear ? y0 + f1 * ry - 0.5f : y0 + f1 * ry);
+        const int Imin = I0 < I1 ? I0 : I1, Jmin = J0 < J1 ? J0 : J1;
+        /* bilinear reads the cells floor(q - 1/2) and one more on each axis */
+        const int wi = (I0 < I1 ? I1 - I0 : I0 - I1) + bilinear, wj = (J0 < J1 ? J1 - J0 : J0 - J1) + bilinear;
+        if (wi <= B && wj <= B) {
+            const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
+            const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+            float fdh;
+            if (bilinear) /* the sample's own dh of a height above any its rounding reaches */
+                fdh = retro_bilinear_dh((float)(M + 1), height);
+            else
+                fdh = (float)((int64_t)M - height);
+            const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;
+            if (!(vf >= need)) {
+                d = d1 + 1;
+                if (L < lmax)
+                    L++;
+                continue;
+            }
+        }
+        if (L == RETRO_PYR_LMIN)
+            break;
+        L--;
+    }
+    c->level = L;
+    return d;
+}
+
+
+#endif

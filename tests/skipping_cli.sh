@@ -1,0 +1,28 @@
+#!/bin/sh
+# retro render --no-skip and --stats (docs/SKIPPING.md): the same image either way, and counts
+# that add up: as many samples paint with skipping as without, fewer are evaluated.
+set -u
+retro=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+map=maps/test/alpine-200
+args="-s 160x120 -d 400 -p 100,100 -a 30 -o"
+
+"$retro" render $map $args "$tmp/skip.ppm" --stats >"$tmp/on.txt" || fail "render --stats"
+"$retro" render $map --no-skip $args "$tmp/noskip.ppm" --stats >"$tmp/off.txt" || fail "render --no-skip --stats"
+"$retro" render $map -k naive $args "$tmp/naive.ppm" || fail "render naive"
+cmp -s "$tmp/skip.ppm" "$tmp/noskip.ppm" || fail "--no-skip changed the image"
+cmp -s "$tmp/skip.ppm" "$tmp/naive.ppm" || fail "the skipping frame differs from naive"
+grep -q '^samples: 63840 (W x (D-1)), skipping on$' "$tmp/on.txt" || fail "--stats: $(head -n 1 "$tmp/on.txt")"
+grep -q 'skipping off$' "$tmp/off.txt" || fail "--no-skip --stats: $(head -n 1 "$tmp/off.txt")"
+num() { sed -n "s/^$1: \([0-9]*\).*/\1/p" "$2"; }
+[ "$(num painting "$tmp/on.txt")" = "$(num painting "$tmp/off.txt")" ] || fail "painting counts differ"
+on=$(num evaluated "$tmp/on.txt"); off=$(num evaluated "$tmp/off.txt")
+[ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "evaluated: $on with skipping, $off without"
+# no stats and no output file when the input is bad
+"$retro" render $map --stats -d 12x -o "$tmp/bad.ppm" >"$tmp/bad.txt" 2>/dev/null
+[ $? -eq 2 ] && [ ! -e "$tmp/bad.ppm" ] && [ ! -s "$tmp/bad.txt" ] || fail "bad input with --stats"
+echo "skipping cli: $fails failures"
+[ "$fails" -eq 0 ]
