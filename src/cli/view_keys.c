@@ -96,7 +96,7 @@ int view_script_parse(const char *s, view_script *out, char *err, size_t errlen)
             goto fail;
         }
         if (count < 0) {
-            snprintf(err, errlen, "bad repeat count in '%.*s' (KEY*N, N from 1 to %d)",
+            snprintf(err, errlen, "bad repeat count in '%.*s' in the key script (KEY*N, N from 1 to %d)",
                      (int)(len > 40 ? 40 : len), p, VIEW_SCRIPT_MAX_FRAMES);
             goto fail;
         }

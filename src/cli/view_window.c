@@ -157,8 +157,23 @@ static int run(window *w, view_state *v, view_ui *ui)
     return 0;
 }
 
+/* Whether a window could be seen: SDL would otherwise fall back to its offscreen driver (or
+ * print the complaints of the Wayland library it probes) and show nothing. */
+static const char *no_display(void)
+{
+    const char *drv = getenv("SDL_VIDEODRIVER");
+    if (drv && (!strcmp(drv, "dummy") || !strcmp(drv, "offscreen")))
+        return drv;
+    if (!drv && !getenv("DISPLAY") && !getenv("WAYLAND_DISPLAY"))
+        return "neither DISPLAY nor WAYLAND_DISPLAY is set";
+    return NULL;
+}
+
 int view_window_run(view_state *v, view_ui *ui)
 {
+    const char *why = no_display();
+    if (why)
+        return cli_error("view", "no display (%s); --keys replays a key script headless", why);
     if (SDL_Init(SDL_INIT_VIDEO))
         return cli_error("view", "no display (%s); --keys replays a key script headless", SDL_GetError());
     const char *drv = SDL_GetCurrentVideoDriver();
