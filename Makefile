@@ -51,7 +51,7 @@ COUNT_TESTS := $(BIN)/retro-count-tests
 # The course's update_player over a list of velocities: tests/view.sh checks retro view's poses.
 VIEW_POSE := $(BIN)/retro-view-pose
 
-.PHONY: all help deps check verify demo maps asan clean install submission accuracy
+.PHONY: all help deps check verify demo maps asan clean install submission accuracy view
 all: $(RETRO) ## build the library and the retro CLI
 
 help: ## list the targets
@@ -111,6 +111,10 @@ check: deps ## run the tests (installs what is missing first)
 	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(VIEW_POSE) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
+
+view: $(RETRO) ## fly through the islands scene in a window (retro view; keys in docs/VIEW.md)
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)$(RETRO) view maps/islands.scene
 
 verify: $(RETRO) ## every kernel in every mode against naive, byte for byte (full case set)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
