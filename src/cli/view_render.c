@@ -44,7 +44,9 @@ int view_open(const char *cmd, const render_opts *o, view_state *v)
     v->kernel = (size_t)(v->j.k - retro_kernels);
     v->mode = v->j.mode;
     v->fx_on = v->j.rc.fx != NULL;
-    v->threads = (int)o->threads;
+    /* Always an explicit count, so the overlay says what every threaded kernel uses (their
+     * defaults differ). */
+    v->threads = o->threads ? (int)o->threads : retro_ctx_threads(&v->j.rc);
     return 0;
 }
 
@@ -128,8 +130,8 @@ void view_toggle_effects(view_state *v)
 void view_next_threads(view_state *v)
 {
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int n = cores < 1 ? 1 : cores > 64 ? 64 : (int)cores, t = view_threads_shown(v);
-    v->threads = t >= n ? 1 : t + 1;
+    int n = cores < 1 ? 1 : cores > 64 ? 64 : (int)cores;
+    v->threads = v->threads >= n ? 1 : v->threads + 1;
 }
 
 void view_distance(view_state *v, int delta)
@@ -179,9 +181,5 @@ int view_has_effects(const view_state *v)
 
 int view_threads_shown(const view_state *v)
 {
-    if (v->threads > 0)
-        return v->threads;
-    retro_ctx rc = v->j.rc;
-    rc.threads = 0;
-    return retro_ctx_threads(&rc);
+    return v->threads;
 }

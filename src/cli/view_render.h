@@ -14,7 +14,7 @@ typedef struct view_state {
     size_t kernel;      /* row of the kernel table */
     retro_mode mode;    /* as chosen; the scene's lod effect renders exact as lod */
     int fx_on;          /* the scene's effects are in force */
-    int threads;        /* for threaded kernels; 0: the library's default */
+    int threads;        /* for threaded kernels */
     char status[160];   /* why the last key did not do what it says, or "" */
 } view_state;
 
