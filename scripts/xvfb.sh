@@ -7,21 +7,24 @@ xvfb_tools() { # prints the missing tools, nothing when all are there
   done
 }
 
-xvfb_start() { # W H: starts Xvfb on the first free display from :90, exports DISPLAY
-  n=90
-  while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do
-    n=$((n + 1))
-    [ $n -gt 140 ] && { echo "no free X display number" >&2; return 1; }
-  done
-  Xvfb ":$n" -screen 0 "${1}x${2}x24" -nolisten tcp >/dev/null 2>&1 &
+xvfb_start() { # W H: starts Xvfb on a free display (Xvfb picks it: no race with other runs)
+  XVFB_FD_FILE=$(mktemp)
+  Xvfb -displayfd 5 -screen 0 "${1}x${2}x24" -nolisten tcp 5>"$XVFB_FD_FILE" >/dev/null 2>&1 &
   XVFB_PID=$!
-  export DISPLAY=":$n"
   i=0
-  until [ -e "/tmp/.X11-unix/X$n" ] && xdotool getmouselocation >/dev/null 2>&1; do
+  until n=$(tr -dc 0-9 <"$XVFB_FD_FILE") && [ -n "$n" ]; do
     i=$((i + 1))
     if [ $i -gt 100 ] || ! kill -0 "$XVFB_PID" 2>/dev/null; then
-      echo "Xvfb :$n did not start" >&2; return 1
+      echo "Xvfb did not start" >&2; rm -f "$XVFB_FD_FILE"; return 1
     fi
+    sleep 0.1
+  done
+  rm -f "$XVFB_FD_FILE"
+  export DISPLAY=":$n"
+  i=0
+  until xdotool getmouselocation >/dev/null 2>&1; do
+    i=$((i + 1))
+    [ $i -gt 50 ] && { echo "Xvfb :$n does not answer" >&2; return 1; }
     sleep 0.1
   done
 }

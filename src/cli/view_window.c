@@ -108,7 +108,7 @@ static int poll(window *w, view_state *v, view_ui *ui, unsigned char held[VA_COU
             view_action a = key_action(&e.key.keysym);
             if (view_is_motion(a))
                 held[a] = 1;
-            else if (!e.key.repeat)
+            else if (!e.key.repeat || a == VA_FAR || a == VA_NEAR) /* distance keys repeat */
                 dirty |= view_apply(v, ui, a);
         } else if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
                    !v->o.have_size) {
