@@ -118,6 +118,43 @@ flight ybuffer "f,m,w*5,m,tab,m,a*4,f,m,minus,q*3,tab,m,p,w*3,p,s"
 last=$(kname $((nk - 1)))
 flight "$last" "tab,w*8,tab,tab,m,m,d*2"
 
+# Bad input: one line, exit 2, nothing written.
+expect_bad() { # WHAT NEEDLE ENV... -- ARGS...
+  what=$1 needle=$2; shift 2
+  rm -f "$tmp/out.png"
+  env "$@" >/dev/null 2>"$tmp/err" </dev/null
+  rc=$?
+  lines=$(wc -l <"$tmp/err")
+  if [ $rc -ne 2 ] || [ "$lines" -ne 1 ] || [ -e "$tmp/out.png" ] || ! grep -qF -- "$needle" "$tmp/err"; then
+    fail "$what: exit $rc, $lines stderr lines, want '$needle': $(cat "$tmp/err")"
+  fi
+}
+
+# A kernel that cannot render the scene's effects (bilinear is per sample; the SIMD kernels
+# lack it): switching to it turns effects off, and the frame is retro render's of the plain map.
+sed 's/^\[water\]$/[bilinear]\nenabled = yes\n[water]/' "$tmp/isl.scene" >"$tmp/bil.scene"
+for k0 in $(cut -d' ' -f1 "$tmp/kernels"); do
+  k1=$(kname $((($(kindex "$k0") + 1) % nk)))
+  rm -f "$tmp/view.png"
+  if ! "$retro" render "$tmp/bil.scene" -k "$k0" -o "$tmp/ref.png" 2>/dev/null; then
+    expect_bad "bilinear scene with $k0" "cannot render the effects" "$retro" view "$tmp/bil.scene" -k "$k0" \
+      --keys w --screenshot "$tmp/out.png"
+    continue
+  fi
+  got=$("$retro" view "$tmp/bil.scene" -k "$k0" --keys "w*3,tab,w" --screenshot "$tmp/view.png" 2>"$tmp/err") ||
+    { fail "bilinear $k0 -> $k1: $(cat "$tmp/err")"; continue; }
+  set -- $got
+  pose="-p $1,$2 -z $3 -a $4"
+  # shellcheck disable=SC2086
+  if "$retro" render "$tmp/bil.scene" -k "$k1" $pose -o "$tmp/ref.png" 2>/dev/null; then
+    cmp -s "$tmp/view.png" "$tmp/ref.png" || fail "bilinear $k0 -> $k1: frame differs from retro render of the scene"
+  elif "$retro" render "$here/maps/islands" -s 160x120 --sky 87b5e8 -k "$k1" $pose -o "$tmp/ref.png"; then
+    cmp -s "$tmp/view.png" "$tmp/ref.png" || fail "bilinear $k0 -> $k1: effects not turned off for a kernel without them"
+  else
+    fail "bilinear $k0 -> $k1: retro render fails"
+  fi
+done
+
 # Ctrl+S / F12: the PNG is the frame, its scene reproduces it through retro render.
 rm -rf "$tmp/saved"
 out=$("$retro" view "$tmp/isl.scene" -k ybuffer --keys "w*12,a*5,f12,q*2,m,ctrl+s" --save-dir "$tmp/saved" \
@@ -134,17 +171,6 @@ else
   done
 fi
 
-# Bad input: one line, exit 2, nothing written.
-expect_bad() { # WHAT NEEDLE ENV... -- ARGS...
-  what=$1 needle=$2; shift 2
-  rm -f "$tmp/out.png"
-  env "$@" >/dev/null 2>"$tmp/err" </dev/null
-  rc=$?
-  lines=$(wc -l <"$tmp/err")
-  if [ $rc -ne 2 ] || [ "$lines" -ne 1 ] || [ -e "$tmp/out.png" ] || ! grep -qF -- "$needle" "$tmp/err"; then
-    fail "$what: exit $rc, $lines stderr lines, want '$needle': $(cat "$tmp/err")"
-  fi
-}
 expect_bad "missing map" "nosuch" "$retro" view "$tmp/nosuch" --keys w --screenshot "$tmp/out.png"
 expect_bad "missing scene" "nosuch" "$retro" view "$tmp/nosuch.scene" --keys w --screenshot "$tmp/out.png"
 expect_bad "unknown kernel" "unknown kernel" "$retro" view "$tmp/isl.scene" -k warp --keys w --screenshot "$tmp/out.png"

@@ -44,6 +44,10 @@ int view_open(const char *cmd, const render_opts *o, view_state *v)
     v->kernel = (size_t)(v->j.k - retro_kernels);
     v->mode = v->j.mode;
     v->fx_on = v->j.rc.fx != NULL;
+    if (!renders_fx(v, kernel(v))) { /* as retro render refuses it */
+        job_close(&v->j);
+        return cli_error(cmd, "kernel '%s' cannot render the effects of %s", kernel(v)->name, o->map);
+    }
     /* Always an explicit count, so the overlay says what every threaded kernel uses (their
      * defaults differ). */
     v->threads = o->threads ? (int)o->threads : retro_ctx_threads(&v->j.rc);
