@@ -28,6 +28,10 @@ PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
 PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
 LDLIBS     = $(PKG_LIBS) -fopenmp -lm
+# SDL2 is the retro CLI's alone (retro view's window): the library never sees it. Its headers
+# are system headers, so the warning flags stay on for our code only.
+SDL_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2 2>/dev/null))
+SDL_LIBS   = $(shell pkg-config --libs sdl2 2>/dev/null)
 
 # The course API (render, draw_line, update_player, bonus_implemented) is kept out of libretro,
 # whose every exported name starts with retro_, so a program can define its own render().
@@ -38,6 +42,9 @@ LIB_SRC  := $(filter-out src/cli/% $(COURSE_SRC),$(wildcard src/*.c)) $(wildcard
 PEER_SRC := $(wildcard src/peer/*.c)
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c $(PEER_SRC)
+# retro view's SDL-free parts, tested in tests/test_view_keys.c.
+TEST_CLI := $(addprefix src/cli/,view_keys.c view_font.c view_overlay.c view_render.c \
+              scene_job.c scene_args.c cli_args.c)
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(wildcard src/kernel_*.c)
@@ -45,7 +52,7 @@ COUNTED  := $(wildcard src/kernel_*.c)
 # The ybuffer kernel once more, counting the samples it evaluates (retro render --stats).
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/ybuffer_counted.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
-TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
+TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o) $(TEST_CLI:%.c=$(BUILD)/%.o)
 COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
 COUNT_LIB_OBJ := $(filter-out $(COUNTED:src/%.c=$(BUILD)/src/%.o),$(LIB_OBJ))
 
@@ -54,8 +61,10 @@ COURSE_LIB := $(BUILD)/libretro-course.a
 RETRO    := $(BIN)/retro
 TESTS    := $(BIN)/retro-tests
 COUNT_TESTS := $(BIN)/retro-count-tests
+# The course's update_player over a list of velocities: tests/view.sh checks retro view's poses.
+VIEW_POSE := $(BIN)/retro-view-pose
 
-.PHONY: all help deps check verify demo maps asan clean install submission accuracy
+.PHONY: all help deps check verify demo maps asan clean install submission accuracy view
 all: $(RETRO) ## build the library and the retro CLI
 
 help: ## list the targets and the variables they take
@@ -81,6 +90,7 @@ deps: ## install missing Debian packages (compiler, libraries, tools)
 # Per-file flags: OpenMP only where threads are made.
 $(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o \
   $(BUILD)/pic/src/kernel_omp.o $(BUILD)/pic/src/omp_pool.o: CFLAGS_FILE := -fopenmp
+$(BUILD)/src/cli/view_window.o: CFLAGS_FILE = $(SDL_CFLAGS)
 
 # Per-file ISA flags: each SIMD kernel file gets exactly its ISA, never -march=native and never
 # -mfma (with -ffp-contract=off above, no multiply-add is fused anywhere).
@@ -115,10 +125,15 @@ $(LIB): $(LIB_OBJ)
 $(COURSE_LIB): $(COURSE_SRC:%.c=$(BUILD)/%.o)
 	$(Q)rm -f $@ && ar rcs $@ $^
 
-$(RETRO): $(CLI_OBJ) $(LIB)
+$(RETRO): $(CLI_OBJ) $(COURSE_LIB) $(LIB)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(SAN) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+	$(Q)$(CC) $(SAN) -o $@ $(CLI_OBJ) $(COURSE_LIB) $(LIB) $(LDLIBS) $(SDL_LIBS)
+
+$(VIEW_POSE): $(BUILD)/tests/view_pose.o $(COURSE_LIB) $(LIB)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(SAN) -o $@ $< $(COURSE_LIB) $(LIB) $(LDLIBS)
 
 $(TESTS): $(TEST_OBJ) $(COURSE_LIB) $(LIB)
 	@mkdir -p $(@D)
@@ -134,9 +149,13 @@ maps: $(RETRO) ## generate the default scenes and the analytic test maps under m
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 
 check: deps ## run the tests (installs what is missing first)
-	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(BENCH_BIN)
+	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(VIEW_POSE) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
+
+view: $(RETRO) ## fly through the islands scene in a window (retro view; keys in docs/VIEW.md)
+	$(Q)sh scripts/make-maps.sh $(RETRO)
+	$(Q)$(RETRO) view maps/islands.scene
 
 verify: $(RETRO) ## every kernel in every mode against naive, byte for byte (full case set)
 	$(Q)sh scripts/make-maps.sh $(RETRO)

@@ -27,5 +27,6 @@ int cmd_genmap(int argc, char **argv);
 int cmd_verify(int argc, char **argv);
 int cmd_accuracy(int argc, char **argv);
 int cmd_fly(int argc, char **argv);
+int cmd_view(int argc, char **argv);
 
 #endif

@@ -16,6 +16,7 @@ static const struct {
 } commands[] = {
     {"render", cmd_render, "render one frame of a map or a scene to PPM or PNG"},
     {"fly", cmd_fly, "render a scene's path or a map's circuit, one image per frame"},
+    {"view", cmd_view, "fly through a map or scene in a window, switching kernels live"},
     {"kernels", cmd_kernels, "list the kernels, their modes and whether this CPU runs them"},
     {"verify", cmd_verify, "check every kernel pixel-identical to naive"},
     {"genmap", cmd_genmap, "generate a procedural or analytic map"},
