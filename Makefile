@@ -14,9 +14,12 @@ SHARED   ?= ../shared
 WARN     := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wvla -Wconversion -Wno-sign-conversion
 FPFLAGS  := -ffp-contract=off -fno-math-errno
 CFLAGS   ?= $(OPT) -g
-ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+# Every folder that holds headers is on the include path, so a file moved between folders
+# keeps its #include lines.
+INCS     := $(addprefix -I,$(patsubst %/,%,$(sort $(dir $(shell find include src tools -name '*.h')))))
+ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SAN) $(INCS) -MMD -MP
 CXXFLAGS ?= $(OPT) -g
-ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) $(INCS) -MMD -MP
 
 PKGS_LIB  := spng hwloc inih
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
@@ -24,18 +27,19 @@ PKG_LIBS   = $(shell pkg-config --libs $(PKGS_LIB) 2>/dev/null)
 TEST_LIBS  = $(shell pkg-config --libs criterion 2>/dev/null)
 LDLIBS     = $(PKG_LIBS) -fopenmp -lm
 
-LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*.c))
+# The library: every .c under src/ and tools/ but the CLI and the submission's own parts.
+LIB_SRC  := $(sort $(filter-out src/cli/% src/submission/%,$(shell find src tools -name '*.c')))
 CLI_SRC  := $(wildcard src/cli/*.c)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
-COUNTED  := $(wildcard src/kernel_*.c)
+COUNTED  := $(sort $(shell find src -name 'kernel_*.c'))
 
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
-COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
-COUNT_LIB_OBJ := $(filter-out $(COUNTED:src/%.c=$(BUILD)/src/%.o),$(LIB_OBJ))
+COUNT_OBJ := $(COUNTED:%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
+COUNT_LIB_OBJ := $(filter-out $(COUNTED:%.c=$(BUILD)/%.o),$(LIB_OBJ))
 
 LIB      := $(BUILD)/libretro.a
 RETRO    := $(BIN)/retro
@@ -51,22 +55,24 @@ help: ## list the targets
 deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
 
-# Per-file flags: OpenMP only where threads are made.
-$(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o: CFLAGS_FILE := -fopenmp
+# Per-file flags by name, so a new file needs no line here. OpenMP only where threads are
+# made: files named *omp.c or *omp_pool.c.
+%omp.o %omp_pool.o: CFLAGS_FILE := -fopenmp
 
-# Per-file ISA flags: each SIMD kernel file gets exactly its ISA, never -march=native and never
-# -mfma (with -ffp-contract=off above, no multiply-add is fused anywhere).
-$(BUILD)/src/kernel_simd_sse2.o $(BUILD)/count/kernel_simd_sse2.o: CFLAGS_ISA := -msse2
-$(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o: CFLAGS_ISA := -mavx2
-$(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o: \
-  CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+# ISA flags by folder and suffix: src/arch/x86/*_<isa>.c gets exactly its ISA, never
+# -march=native and never -mfma (with -ffp-contract=off above, no multiply-add is fused).
+ISA_FLAGS_sse2   := -msse2
+ISA_FLAGS_avx2   := -mavx2
+ISA_FLAGS_avx512 := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+$(foreach b,$(BUILD)/src/arch/x86 $(BUILD)/count/src/arch/x86,$(foreach i,sse2 avx2 avx512,\
+  $(eval $(b)/%_$(i).o: CFLAGS_ISA := $(ISA_FLAGS_$(i)))))
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) $(PKG_CFLAGS) -c $< -o $@
 
-$(BUILD)/count/%.o: src/%.c
+$(BUILD)/count/%.o: %.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting writes)")
 	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) -DRETRO_COUNT_WRITES -c $< -o $@
@@ -139,7 +145,7 @@ $(FUZZ_BUILD)/bin/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIBS)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  FUZZ    $@")
 	$(Q)$(FUZZ_CC) -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FPFLAGS) -fsanitize=fuzzer \
-	  $(FUZZ_SAN) -Iinclude -Isrc -Isrc/cli $< $(FUZZ_LIBS) $(PKG_LIBS) -fopenmp -lm -o $@
+	  $(FUZZ_SAN) $(INCS) $< $(FUZZ_LIBS) $(PKG_LIBS) -fopenmp -lm -o $@
 
 fuzz: fuzz-build ## run every fuzz target for FUZZ_TIME seconds (default 60) from its seed corpus
 	$(Q)for t in $(FUZZ_TARGETS); do \
@@ -157,7 +163,8 @@ BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
 BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) \
               $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
-SUBMISSION_SRC := $(wildcard src/*.c src/*.h include/*.h src/submission/*.c) scripts/make-submission.sh
+SUBMISSION_SRC := $(shell find src include -name '*.[ch]' -not -path 'src/cli/*') scripts/make-submission.sh \
+  scripts/amalgamate-isa.sh
 QUICK      ?=
 BENCH_ARGS ?=
 
@@ -179,7 +186,7 @@ $(BUILD)/bench/submission.o: $(SUBMISSION_SRC)
 	$(Q)objcopy --keep-global-symbol=submission_render $@.tmp2.o $@
 	$(Q)rm -f $@.tmp.o $@.tmp2.o
 # ybuffer without its effect code, to show that effects not called for cost nothing.
-$(BUILD)/bench/ybuffer_noeffects.o: src/kernel_ybuffer.c
+$(BUILD)/bench/ybuffer_noeffects.o: src/voxel/kernel_ybuffer.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (effects compiled out)")
 	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_NO_EFFECTS -Dretro_kernel_ybuffer=retro_kernel_ybuffer_noeffects \
@@ -215,7 +222,7 @@ install: $(RETRO) $(LIB) ## install retro, libretro.a and the headers under PREF
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/retro
 	install -m 755 $(RETRO) $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/retro/
+	install -m 644 include/*.h include/*/*.h $(DESTDIR)$(PREFIX)/include/retro/
 
 clean: ## remove build outputs (generated maps too)
 	rm -rf build maps/*.pgm maps/*.ppm maps/*.png results/verify
