@@ -1,0 +1,30 @@
+#!/bin/sh
+# Compares the frames of this tree's library with another build's, byte for byte: builds
+# tests/frame_digest.c against each (BASE is a worktree already built with `make`), runs both
+# over the verify cases and POSES seeded random poses, every kernel, mode, effect set, ISA
+# level and thread count, and diffs the digests. Exit 0 when every frame is identical.
+# usage: compare-frames.sh BASE [POSES]     e.g. compare-frames.sh /tmp/base-ba5e92b 200
+set -eu
+base=$1 poses=${2:-200}
+shared=${RETRO_SHARED:-../shared}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+flags="-std=c11 -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off"
+libs="$(pkg-config --libs spng hwloc inih) -fopenmp -lm"
+incs() { find "$1/include" "$1/src" -name '*.h' -exec dirname {} \; | sort -u | sed 's/^/-I/'; }
+build() { # TREE OUT
+  $CC $flags $(incs "$1") tests/frame_digest.c "$1/src/cli/verify_cases.c" "$1/build/libretro.a" $libs -o "$2"
+}
+CC=${CC:-cc}
+build "$base" "$tmp/base"
+build . "$tmp/new"
+"$tmp/base" maps "$shared" "$poses" >"$tmp/base.txt"
+"$tmp/new" maps "$shared" "$poses" >"$tmp/new.txt"
+lines=$(wc -l <"$tmp/new.txt")
+if cmp -s "$tmp/base.txt" "$tmp/new.txt"; then
+  echo "compare-frames: $lines frames identical to $base"
+else
+  diff "$tmp/base.txt" "$tmp/new.txt" | head -20
+  echo "compare-frames: frames differ from $base"
+  exit 1
+fi
