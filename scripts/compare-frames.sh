@@ -3,9 +3,11 @@
 # tests/frame_digest.c against each (BASE is a worktree already built with `make`), runs both
 # over the verify cases and POSES seeded random poses, every kernel, mode, effect set, ISA
 # level and thread count, and diffs the digests. Exit 0 when every frame is identical.
-# usage: compare-frames.sh BASE [POSES]     e.g. compare-frames.sh /tmp/base-ba5e92b 200
+# With "naive", naive alone renders (each build's checker proves its variants equal its naive;
+# every variant costs a fresh context, and the threaded ones load the hwloc topology each).
+# usage: compare-frames.sh BASE [POSES [naive]]   e.g. compare-frames.sh /tmp/base-ba5e92b 200
 set -eu
-base=$1 poses=${2:-200}
+base=$1 poses=${2:-200} which=${3:-all}
 shared=${RETRO_SHARED:-../shared}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -18,8 +20,10 @@ build() { # TREE OUT
 CC=${CC:-cc}
 build "$base" "$tmp/base"
 build . "$tmp/new"
-"$tmp/base" maps "$shared" "$poses" >"$tmp/base.txt"
-"$tmp/new" maps "$shared" "$poses" >"$tmp/new.txt"
+"$tmp/base" maps "$shared" "$poses" "$which" >"$tmp/base.txt" &
+bpid=$!
+"$tmp/new" maps "$shared" "$poses" "$which" >"$tmp/new.txt"
+wait $bpid
 lines=$(wc -l <"$tmp/new.txt")
 if cmp -s "$tmp/base.txt" "$tmp/new.txt"; then
   echo "compare-frames: $lines frames identical to $base"
