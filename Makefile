@@ -19,9 +19,12 @@ RESULTS  ?= $(BUILD)/results
 WARN     := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wvla -Wconversion -Wno-sign-conversion
 FPFLAGS  := -ffp-contract=off -fno-math-errno
 CFLAGS   ?= $(OPT) -g
-ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+# Every folder that holds headers is on the include path, so a file moved between folders
+# keeps its #include lines.
+INCS     := -Isrc $(addprefix -I,$(patsubst %/,%,$(sort $(dir $(shell find include src tools -name '*.h')))))
+ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L $(CFLAGS) $(WARN) $(FPFLAGS) $(SAN) $(INCS) -MMD -MP
 CXXFLAGS ?= $(OPT) -g
-ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) -Iinclude -Isrc -MMD -MP
+ALLCXXFLAGS = -std=c++17 $(CXXFLAGS) -Wall -Wextra $(FPFLAGS) $(SAN) $(INCS) -MMD -MP
 
 PKGS_LIB  := spng hwloc inih
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS_LIB) 2>/dev/null)
@@ -35,11 +38,14 @@ SDL_LIBS   = $(shell pkg-config --libs sdl2 2>/dev/null)
 
 # The course API (render, draw_line, update_player, bonus_implemented) is kept out of libretro,
 # whose every exported name starts with retro_, so a program can define its own render().
-COURSE_SRC := src/course.c
-LIB_SRC  := $(filter-out src/cli/% $(COURSE_SRC),$(wildcard src/*.c)) $(wildcard src/mesh/*.c)
+COURSE_SRC := src/core/course.c
 # Peer algorithms (src/peer/): others' traversals timed and measured beside the kernels, in the
 # CLI and the benchmark only, never in the library or its kernel table.
 PEER_SRC := $(wildcard src/peer/*.c)
+# The library: every .c under src/ and tools/ but the CLI, the submission's own parts, the peers
+# and the course API.
+LIB_SRC  := $(sort $(filter-out src/cli/% src/submission/% src/peer/% $(COURSE_SRC),\
+              $(shell find src tools -name '*.c')))
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c $(PEER_SRC)
 # retro view's SDL-free parts, tested in tests/test_view_keys.c.
@@ -47,14 +53,14 @@ TEST_CLI := $(addprefix src/cli/,view_keys.c view_font.c view_overlay.c view_ren
               scene_job.c scene_args.c cli_args.c)
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
-COUNTED  := $(wildcard src/kernel_*.c)
+COUNTED  := $(sort $(shell find src -name 'kernel_*.c'))
 
 # The ybuffer kernel once more, counting the samples it evaluates (retro render --stats).
-LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/ybuffer_counted.o
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/voxel/ybuffer_counted.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o) $(TEST_CLI:%.c=$(BUILD)/%.o)
-COUNT_OBJ := $(COUNTED:src/%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
-COUNT_LIB_OBJ := $(filter-out $(COUNTED:src/%.c=$(BUILD)/src/%.o),$(LIB_OBJ))
+COUNT_OBJ := $(COUNTED:%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
+COUNT_LIB_OBJ := $(filter-out $(COUNTED:%.c=$(BUILD)/%.o),$(LIB_OBJ))
 
 LIB      := $(BUILD)/libretro.a
 COURSE_LIB := $(BUILD)/libretro-course.a
@@ -87,19 +93,18 @@ help: ## list the targets and the variables they take
 deps: ## install missing Debian packages (compiler, libraries, tools)
 	$(Q)sh scripts/install-deps.sh
 
-# Per-file flags: OpenMP only where threads are made.
-$(BUILD)/src/kernel_omp.o $(BUILD)/count/kernel_omp.o $(BUILD)/src/omp_pool.o \
-  $(BUILD)/pic/src/kernel_omp.o $(BUILD)/pic/src/omp_pool.o: CFLAGS_FILE := -fopenmp
+# Per-file flags by name, so a new file needs no line here. OpenMP only where threads are
+# made: files named *omp.c or *omp_pool.c.
+%omp.o %omp_pool.o: CFLAGS_FILE := -fopenmp
 $(BUILD)/src/cli/view_window.o: CFLAGS_FILE = $(SDL_CFLAGS)
 
-# Per-file ISA flags: each SIMD kernel file gets exactly its ISA, never -march=native and never
-# -mfma (with -ffp-contract=off above, no multiply-add is fused anywhere).
-$(BUILD)/src/kernel_simd_sse2.o $(BUILD)/count/kernel_simd_sse2.o $(BUILD)/pic/src/kernel_simd_sse2.o: \
-  CFLAGS_ISA := -msse2
-$(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o $(BUILD)/pic/src/kernel_simd_avx2.o: \
-  CFLAGS_ISA := -mavx2
-$(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o $(BUILD)/pic/src/kernel_simd_avx512.o: \
-  CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+# ISA flags by folder and suffix: src/arch/x86/*_<isa>.c gets exactly its ISA, never
+# -march=native and never -mfma (with -ffp-contract=off above, no multiply-add is fused).
+ISA_FLAGS_sse2   := -msse2
+ISA_FLAGS_avx2   := -mavx2
+ISA_FLAGS_avx512 := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+$(foreach b,$(BUILD)/src/arch/x86 $(BUILD)/count/src/arch/x86 $(BUILD)/pic/src/arch/x86,\
+  $(foreach i,sse2 avx2 avx512,$(eval $(b)/%_$(i).o: CFLAGS_ISA := $(ISA_FLAGS_$(i)))))
 
 $(BUILD)/src/cli/main.o: CFLAGS_FILE := -DRETRO_VERSION='"$(VERSION)"'
 
@@ -108,12 +113,12 @@ $(BUILD)/%.o: %.c
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) $(PKG_CFLAGS) -c $< -o $@
 
-$(BUILD)/count/%.o: src/%.c
+$(BUILD)/count/%.o: %.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting writes)")
 	$(Q)$(CC) $(ALLCFLAGS) $(CFLAGS_FILE) $(CFLAGS_ISA) -DRETRO_COUNT_WRITES -c $< -o $@
 
-$(BUILD)/src/ybuffer_counted.o: src/kernel_ybuffer.c
+$(BUILD)/src/voxel/ybuffer_counted.o: src/voxel/kernel_ybuffer.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (counting samples)")
 	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_COUNT_SAMPLES -Dretro_kernel_ybuffer=retro_kernel_ybuffer_counted \
@@ -199,7 +204,7 @@ $(FUZZ_BUILD)/bin/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIBS)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  FUZZ    $@")
 	$(Q)$(FUZZ_CC) -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FPFLAGS) -fsanitize=fuzzer \
-	  $(FUZZ_SAN) -Iinclude -Isrc -Isrc/cli $< $(FUZZ_LIBS) $(PKG_LIBS) -fopenmp -lm -o $@
+	  $(FUZZ_SAN) $(INCS) $< $(FUZZ_LIBS) $(PKG_LIBS) -fopenmp -lm -o $@
 
 fuzz: fuzz-build ## run every fuzz target for FUZZ_TIME seconds (default 60) from its seed corpus
 	$(Q)for t in $(FUZZ_TARGETS); do \
@@ -217,7 +222,8 @@ BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
 BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) $(PEER_SRC:%.c=$(BUILD)/%.o) \
               $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
-SUBMISSION_SRC := $(wildcard src/*.c src/*.h include/*.h src/submission/*.c) scripts/make-submission.sh
+SUBMISSION_SRC := $(shell find src include -name '*.[ch]' -not -path 'src/cli/*') scripts/make-submission.sh \
+  scripts/amalgamate-isa.sh
 QUICK      ?=
 BENCH_ARGS ?=
 
@@ -239,7 +245,7 @@ $(BUILD)/bench/submission.o: $(SUBMISSION_SRC)
 	$(Q)objcopy --keep-global-symbol=submission_render $@.tmp2.o $@
 	$(Q)rm -f $@.tmp.o $@.tmp2.o
 # ybuffer without its effect code, to show that effects not called for cost nothing.
-$(BUILD)/bench/ybuffer_noeffects.o: src/kernel_ybuffer.c
+$(BUILD)/bench/ybuffer_noeffects.o: src/voxel/kernel_ybuffer.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (effects compiled out)")
 	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_NO_EFFECTS -Dretro_kernel_ybuffer=retro_kernel_ybuffer_noeffects \
@@ -324,7 +330,7 @@ install: $(RETRO) $(LIB) $(SO) $(MAN) ## install retro, libretro (.a, .so), head
 	install -m 755 $(SO) $(DESTDIR)$(PREFIX)/lib/
 	ln -sf libretro.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libretro.so.$(SOVERSION)
 	ln -sf libretro.so.$(SOVERSION) $(DESTDIR)$(PREFIX)/lib/libretro.so
-	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/retro/
+	install -m 644 include/*.h include/*/*.h $(DESTDIR)$(PREFIX)/include/retro/
 	sh scripts/make-pc.sh "$(PREFIX)" "$(VERSION)" "$(PKGS_LIB)" "-fopenmp -lm" \
 	  >$(DESTDIR)$(PREFIX)/lib/pkgconfig/retro.pc
 	install -m 644 $(MAN) $(DESTDIR)$(PREFIX)/share/man/man1/

@@ -15,15 +15,17 @@ void painter_render(const player_t *p, ctx_t *c);
 // results/submission/render.c, built alone with the course's -O3, its render() renamed.
 void submission_render(const player_t *p, ctx_t *c);
 // src/kernel_ybuffer.c built again with RETRO_NO_EFFECTS: the same kernel without effect code.
-void retro_kernel_ybuffer_noeffects(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_ybuffer_noeffects(const void *frame, retro_ctx *rc);
 }
 
 static const unsigned COURSE = RETRO_MODE_BIT(RETRO_MODE_COURSE);
-static const retro_kernel painter_row = {"course painter (-O3)", nullptr, 0, COURSE, 0, "", nullptr, 0};
+static const retro_kernel painter_row = {"course painter (-O3)", nullptr, 0, COURSE, 0, "", nullptr, 0,
+                                         &retro_family_voxel};
 static const retro_kernel submission_row = {"submission (-O3)", nullptr, 0, COURSE, RETRO_KF_THREADED, "",
-                                            nullptr, 0};
+                                            nullptr, 0, &retro_family_voxel};
 static const retro_kernel noeffects_row = {"ybuffer, effect code compiled out", retro_kernel_ybuffer_noeffects, 0,
-                                           RETRO_MODE_BIT(RETRO_MODE_EXACT), RETRO_KF_WRITE_ONCE, "", nullptr, 0};
+                                           RETRO_MODE_BIT(RETRO_MODE_EXACT), RETRO_KF_WRITE_ONCE, "", nullptr, 0,
+                                           &retro_family_voxel};
 
 // The effect sets timed, each alone and the default scenes' combinations.
 struct EffectSet {

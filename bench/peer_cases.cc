@@ -21,7 +21,8 @@ static void peer_direct(const player_t *p, ctx_t *c)
 }
 
 static const retro_kernel peer_row = {"peer: classic demo (s-macke's VoxelSpace traversal)", nullptr, 0,
-                                      RETRO_MODE_BIT(RETRO_MODE_EXACT), 0, "", nullptr, 0};
+                                      RETRO_MODE_BIT(RETRO_MODE_EXACT), 0, "", nullptr, 0,
+                                      &retro_family_voxel};
 
 void plan_peer(BenchPlan *plan)
 {

@@ -149,7 +149,10 @@ void retro_ctx_map_changed(retro_ctx *rc);
 /* Validates (player, ctx) for mode and fills rc->frame. Returns RETRO_OK or an error. */
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c);
 
-typedef void (*retro_kernel_fn)(const retro_frame *f, retro_ctx *rc);
+/* A kernel renders one frame from its family's frame constants (for voxel kernels a
+ * const retro_frame *), using rc only for scratch. Each family sets its frames up its own way
+ * (retro_family.setup) and hands its kernels a pointer to what it built. */
+typedef void (*retro_kernel_fn)(const void *frame, retro_ctx *rc);
 /* Renders columns [u0, u1) (0-based). In mode course qx[d], qy[d] hold the positions of column
  * u0 on entry and of column u1 on return. Threaded kernels run strips of single-thread ones. */
 typedef void (*retro_strip_fn)(const retro_frame *f, float *qx, float *qy, int u0, int u1);
@@ -167,27 +170,61 @@ enum {
     RETRO_KF_THREADED = 1u << 1,   /* uses more than one thread */
 };
 
+/* A family of kernels: kernels that render the same frames from the same frame constants and
+ * are checked against one reference kernel. voxel is the first (src/voxel/family.c). */
+typedef struct retro_family {
+    const char *name;                /* "voxel": `retro kernels` groups by it */
+    const char *reference;           /* the kernel every other kernel of the family must equal */
+    int mode_count;                  /* modes are 0 .. mode_count-1 */
+    const char *const *mode_names;   /* [mode_count], for the CLI and refusals */
+    unsigned fx;                     /* the effects (RETRO_FX_*) defined for this family */
+    /* The mode a frame renders in: mode itself, or what the effects turn it into (voxel: lod
+     * effect on mode exact gives mode lod). Decided here once, for checks and setup alike. */
+    int (*effective_mode)(int mode, const struct retro_effects *fx);
+    /* Validates the inputs for mode and builds the frame constants in rc; *frame is what the
+     * family's kernels receive. */
+    retro_err (*setup)(retro_ctx *rc, int mode, const player_t *p, const ctx_t *c, const void **frame);
+} retro_family;
+
 typedef struct retro_kernel {
     const char *name;     /* stable: the CLI, verify and the benchmark name kernels by it */
     retro_kernel_fn fn;
     unsigned cpu;         /* RETRO_CPU_* it needs */
-    unsigned modes;       /* RETRO_MODE_BIT() of the modes it renders */
+    unsigned modes;       /* RETRO_MODE_BIT() of its family's modes it renders */
     unsigned flags;       /* RETRO_KF_* */
     const char *summary;  /* one line for `retro kernels` */
     retro_strip_fn strip; /* column-strip entry point, or NULL (naive, threaded kernels) */
-    unsigned fx;          /* per-sample effects it renders (RETRO_FX_FOG, RETRO_FX_BILINEAR) */
+    unsigned fx;          /* every effect (RETRO_FX_*) it renders */
+    const retro_family *family;
 } retro_kernel;
 
 extern const retro_kernel retro_kernels[];
 extern const size_t retro_kernel_count;
+/* Every family, in the order `retro kernels` lists them. */
+extern const retro_family *const retro_families[];
+extern const size_t retro_family_count;
+extern const retro_family retro_family_voxel;
 
 const retro_kernel *retro_kernel_find(const char *name);
-/* The fastest kernel this CPU runs for mode (the last capable row of the table). */
+const retro_family *retro_family_find(const char *name);
+/* The family's reference kernel. */
+const retro_kernel *retro_family_reference(const retro_family *fam);
+const char *retro_family_mode_name(const retro_family *fam, int mode);
+/* Returns 0 and sets *mode when name is one of the family's modes; -1 otherwise. */
+int retro_family_mode_parse(const retro_family *fam, const char *name, int *mode);
+/* The name of one effect bit (RETRO_FX_*), or "?". */
+const char *retro_fx_name(unsigned bit);
+/* The fastest voxel kernel this CPU runs for mode (the last capable row of the table). */
 const retro_kernel *retro_kernel_best(retro_mode mode);
-/* The same among kernels that render the per-sample effects of fx (NULL: none). */
+/* The same among kernels that render the effects of fx (NULL: none). */
 const retro_kernel *retro_kernel_best_fx(retro_mode mode, const struct retro_effects *fx);
 int retro_kernel_runs_here(const retro_kernel *k);
 int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode);
+/* Whether k can render mode with the effects fx on this CPU: RETRO_OK, or RETRO_EUNSUPPORTED
+ * with why (one line, "kernel simd-avx2 does not render bilinear") in why[n] if why is not
+ * NULL. The one place the mode and the capability are decided. */
+retro_err retro_kernel_check(const retro_kernel *k, int mode, const struct retro_effects *fx, char *why,
+                             size_t n);
 
 /* CPU features detected once and cached, masked by RETRO_ISA (none|sse2|avx2|avx512) or
  * retro_cpu_limit(). */
@@ -195,6 +232,11 @@ unsigned retro_cpu_features(void);
 /* Forces a lower ISA level; returns RETRO_EINVAL for an unknown name. */
 retro_err retro_cpu_limit(const char *level);
 const char *retro_cpu_level_name(unsigned features);
+/* The highest ISA level whose features all are in features (an index of retro_isa_names). */
+int retro_cpu_level(unsigned features);
+/* The ISA levels, lowest first: "none", "sse2", "avx2", "avx512". Spelled here only. */
+extern const char *const retro_isa_names[];
+extern const int retro_isa_count;
 
 /* Threads a threaded kernel uses with rc: rc->threads if set, else OMP_NUM_THREADS, else the
  * number of cores. */
@@ -202,12 +244,12 @@ int retro_ctx_threads(const retro_ctx *rc);
 /* One line saying how threads are bound to cores here (hwloc), for reports. */
 const char *retro_ctx_binding(retro_ctx *rc);
 
-/* Validates, sets up and renders one frame with kernel k. */
-retro_err retro_render(retro_ctx *rc, const retro_kernel *k, retro_mode mode,
-                       const player_t *p, ctx_t *c);
+/* Validates, sets up and renders one frame with kernel k in mode (a mode of k's family),
+ * with the effects rc->fx. RETRO_EUNSUPPORTED when retro_kernel_check() refuses. */
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c);
 
 const char *retro_mode_name(retro_mode mode);
-/* Returns 0 and sets *mode for "exact" or "course"; -1 otherwise. */
+/* The voxel family's modes: returns 0 and sets *mode for a mode's name; -1 otherwise. */
 int retro_mode_parse(const char *name, retro_mode *mode);
 const char *retro_strerror(retro_err e);
 

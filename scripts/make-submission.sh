@@ -8,9 +8,9 @@ tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
 # The project's files, in dependency order; the two SIMD files are added by amalgamate-isa.sh.
-parts="include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/simd_common.h
-  src/frame.c src/effects_bake.c src/course_accum.c src/kernel_ybuffer.c src/simd_map.c
-  src/kernel_simd_avx2.c src/kernel_simd_avx512.c src/submission/dispatch.c src/kernel_pthreads.c src/course.c"
+parts="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h
+  src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
+  src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
   cat <<HDR
@@ -39,16 +39,16 @@ HDR
   echo
   grep -h '^#include <' $parts | sort -u
   part() { printf '\n/* ---- %s ---- */\n' "$1"; grep -v '^#include' "$1"; }
-  for f in include/retro.h include/retro_scene.h src/retro_internal.h src/kernels.h src/simd_common.h \
-           src/frame.c src/effects_bake.c src/course_accum.c src/kernel_ybuffer.c src/simd_map.c; do
+  for f in include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h \
+           src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c; do
     part "$f"
   done
   # The SIMD strips, each compiled for its ISA and chosen at run time by the CPU's features.
-  printf '\n/* ---- src/kernel_simd_avx2.c ---- */\n'
-  sh scripts/amalgamate-isa.sh src/kernel_simd_avx2.c avx2_ avx2
-  printf '\n/* ---- src/kernel_simd_avx512.c ---- */\n'
-  sh scripts/amalgamate-isa.sh src/kernel_simd_avx512.c avx512_ avx2,avx512f,avx512bw,avx512vl,avx512dq
-  for f in src/submission/dispatch.c src/kernel_pthreads.c src/course.c; do
+  printf '\n/* ---- src/arch/x86/kernel_simd_avx2.c ---- */\n'
+  sh scripts/amalgamate-isa.sh src/arch/x86/kernel_simd_avx2.c avx2_ avx2
+  printf '\n/* ---- src/arch/x86/kernel_simd_avx512.c ---- */\n'
+  sh scripts/amalgamate-isa.sh src/arch/x86/kernel_simd_avx512.c avx512_ avx2,avx512f,avx512bw,avx512vl,avx512dq
+  for f in src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c; do
     part "$f"
   done
 } >"$tmp"

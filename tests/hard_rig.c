@@ -12,8 +12,6 @@ const int map_sizes[NMAPS] = {1, 2, 3, 5, 64, 1000};
 /* Its low byte is non-zero, so no colour of a valid map and not the sky can equal it: a pixel
  * a kernel failed to write keeps it. */
 
-static const char *const levels[] = {"none", "sse2", "avx2", "avx512"};
-
 
 
 rig *rig_new(void)
@@ -25,6 +23,7 @@ rig *rig_new(void)
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
             retro_ctx_init(&g->rc[k][t]);
+    cr_assert_eq(retro_check_init(&g->chk, &retro_family_voxel, NULL, MAX_THREADS), 0);
     return g;
 }
 
@@ -33,6 +32,7 @@ void rig_map_changed(rig *g)
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
             retro_ctx_map_changed(&g->rc[k][t]);
+    retro_check_map_changed(&g->chk);
 }
 
 /* Frees the rig and fails the test if any case failed; the cases were printed as they failed. */
@@ -41,6 +41,7 @@ void rig_done(rig *g, const char *test)
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
             retro_ctx_free(&g->rc[k][t]);
+    retro_check_free(&g->chk);
     free(g->ref);
     free(g->out);
     int failures = g->failures, cases = g->cases, renders = g->renders;
@@ -96,34 +97,27 @@ retro_err rig_render(rig *g, size_t k, int threads, retro_mode mode, const playe
     return retro_render(rc, &retro_kernels[k], mode, p, c);
 }
 
-/* Every kernel but naive, at every ISA level and thread count, must render g->ref exactly. */
-void all_kernels_match(rig *g, const char *what, retro_mode mode, const player_t *p,
-                              ctx_t c)
+/* Reports a variant that failed or differs from g->ref. */
+static void report_variant(void *user, const retro_check_variant *v, const retro_check_result *r)
 {
-    size_t n = (size_t)c.scr_width * (size_t)c.scr_height;
-    c.out = g->out;
-    for (size_t l = 0; l < sizeof levels / sizeof levels[0]; l++) {
-        cr_assert_eq(retro_cpu_limit(levels[l]), RETRO_OK);
-        for (size_t k = 1; k < retro_kernel_count; k++) {
-            const retro_kernel *kr = &retro_kernels[k];
-            if (!retro_kernel_runs_here(kr) || !retro_kernel_has_mode(kr, mode))
-                continue;
-            int threaded = (kr->flags & RETRO_KF_THREADED) != 0;
-            for (int t = threaded; t <= (threaded ? MAX_THREADS : 0); t++) {
-                poison(g->out, n);
-                retro_err e = rig_render(g, k, t, mode, p, &c);
-                long i = e ? -1 : first_diff(g->ref, g->out, n);
-                if (e)
-                    report(g, "FAIL %s: %s/%s isa %s %dt: %s", what, kr->name, retro_mode_name(mode),
-                           levels[l], t, retro_strerror(e));
-                else if (i >= 0)
-                    report(g, "MISMATCH %s: %s/%s isa %s %dt: first difference at pixel (u=%ld, r=%ld): "
-                           "%08x, naive %08x", what, kr->name, retro_mode_name(mode), levels[l], t,
-                           i % c.scr_width + 1, c.scr_height - i / c.scr_width, g->out[i], g->ref[i]);
-            }
-        }
+    rig *g = ((void **)user)[0];
+    const char *what = ((void **)user)[1];
+    if (!r->ran)
+        return;
+    g->renders++;
+    if (r->err || r->differ) {
+        char line[256];
+        retro_check_describe(&g->chk, v, r, line, sizeof line);
+        report(g, "%s %s: %s", r->err ? "FAIL" : "MISMATCH", what, line);
     }
-    retro_cpu_limit(NULL);
+}
+
+/* Every kernel but naive, at every ISA level and thread count (src/check/), must render g->ref
+ * exactly. */
+void all_kernels_match(rig *g, const char *what, retro_mode mode, const player_t *p, ctx_t c)
+{
+    void *user[2] = {g, (void *)what};
+    cr_assert_eq(retro_check_against(&g->chk, mode, NULL, p, &c, g->ref, report_variant, user, NULL), RETRO_OK);
 }
 
 /* Renders g->ref with naive; returns 0 on success. */

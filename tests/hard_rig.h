@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "check.h"
 #include "test_util.h"
 
 #define SKY 0x66a3ff00u
@@ -20,7 +21,8 @@
  * frames. The contexts cache per map pointer, so maps stay allocated until the test ends and
  * in-place edits are announced through rig_map_changed(). */
 typedef struct {
-    retro_ctx rc[MAX_KERNELS][MAX_THREADS + 1];
+    retro_ctx rc[MAX_KERNELS][MAX_THREADS + 1]; /* naive's is rc[0][0] */
+    retro_check chk;   /* every other variant (src/check/) */
     uint32_t *ref, *out;
     size_t cap;
     int failures, cases, renders;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check.h"
 #include "ref_exact.h"
 #include "retro_scene.h"
 #include "test_util.h"
@@ -99,15 +100,25 @@ Test(exact, matches_independent_implementation)
         retro_map_free(&maps[i]);
 }
 
-/* Every kernel, at every ISA level this CPU has, in every mode, against naive. */
+/* Fails the test at the first variant that errs or differs from the reference. */
+static void assert_identical(void *user, const retro_check_variant *v, const retro_check_result *r)
+{
+    const retro_check *chk = ((void **)user)[0];
+    const char *pose = ((void **)user)[1];
+    char line[256];
+    retro_check_describe(chk, v, r, line, sizeof line);
+    cr_assert(!r->ran || (!r->err && !r->differ), "%s, %s", line, pose);
+}
+
+/* Every kernel, at every ISA level this CPU has, in every mode, against naive (src/check/). */
 Test(kernels, identical_to_naive_on_random_poses)
 {
-    static const char *levels[] = {"none", "sse2", "avx2", "avx512"};
     retro_map maps[2];
     test_map("test/alpine-200", &maps[0]);
     noise_map(&maps[1], 5, 3);
+    retro_check chk;
+    cr_assert_eq(retro_check_init(&chk, &retro_family_voxel, NULL, 3), 0);
     uint64_t rng = 7;
-    uint32_t *ref = malloc(sizeof(uint32_t) * 160 * 120), *out = malloc(sizeof(uint32_t) * 160 * 120);
     for (int n = 0; n < 40; n++) {
         const retro_map *m = &maps[n % 2];
         int W = 1 + (int)(rng_next(&rng) % 160), H = 1 + (int)(rng_next(&rng) % 120);
@@ -120,31 +131,17 @@ Test(kernels, identical_to_naive_on_random_poses)
         if (n == 8)
             p.height = INT_MAX;
         for (int mode = 0; mode < RETRO_MODE_COUNT; mode++) {
-            ctx_t c = {W, H, m->size, D, SKY, m->height, m->color, ref};
-            render_with("naive", (retro_mode)mode, &p, &c);
-            c.out = out;
-            for (size_t l = 0; l < 4; l++) {
-                retro_cpu_limit(levels[l]);
-                for (size_t k = 1; k < retro_kernel_count; k++) {
-                    const retro_kernel *kr = &retro_kernels[k];
-                    if (!retro_kernel_runs_here(kr) || !retro_kernel_has_mode(kr, (retro_mode)mode))
-                        continue;
-                    int tmax = kr->flags & RETRO_KF_THREADED ? 3 : 0;
-                    for (int t = tmax ? 1 : 0; t <= tmax; t++) {
-                        memset(out, 0xab, sizeof(uint32_t) * (size_t)(W * H));
-                        render_threads(kr->name, (retro_mode)mode, &p, &c, t);
-                        char what[128];
-                        snprintf(what, sizeof what, "%s/%s at isa %s, %d threads, pose %d", kr->name,
-                                 retro_mode_name((retro_mode)mode), levels[l], t, n);
-                        compare(ref, out, W, H, what);
-                    }
-                }
-            }
-            retro_cpu_limit(NULL);
+            ctx_t c = {W, H, m->size, D, SKY, m->height, m->color, NULL};
+            char pose[96];
+            snprintf(pose, sizeof pose, "mode %s, pose %d", retro_mode_name((retro_mode)mode), n);
+            void *user[2] = {&chk, pose};
+            int bad = 0;
+            cr_assert_eq(retro_check_frame(&chk, mode, NULL, &p, &c, assert_identical, user, &bad), RETRO_OK,
+                         "naive, %s", pose);
+            cr_assert_eq(bad, 0);
         }
     }
-    free(ref);
-    free(out);
+    retro_check_free(&chk);
     retro_map_free(&maps[0]);
     retro_map_free(&maps[1]);
 }

@@ -249,6 +249,7 @@ Test(hard, lod_lambda)
         for (int k = 0; k < MAX_KERNELS; k++)
             for (int t = 0; t <= MAX_THREADS; t++)
                 g->rc[k][t].lod = lambdas[i];
+        g->chk.lod = lambdas[i];
         static const int on[] = {S1, S5, S64};
         for (size_t mi = 0; mi < sizeof on / sizeof on[0]; mi++) {
             const retro_map *m = &maps[on[mi]];

@@ -1,6 +1,9 @@
-/* retro verify: every kernel, in every mode it supports, against naive of the same mode, byte
- * for byte, over the cases of verify_cases.c. Prints a case x kernel table, writes a diff
- * image per mismatch and exits 1 on any difference. */
+/* retro verify: every variant of every kernel (src/check/: kernel x ISA level x threads), in
+ * every mode it supports, against its family's reference in the same mode, byte for byte, over
+ * the cases of verify_cases.c. Prints a case x variant table, writes a diff image per
+ * mismatch and exits 1 on any difference. */
+
+#define VERIFY_CELL_WIDTH 16
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +17,7 @@
 #include "retro_maps.h"
 #include "retro_scene.h"
 #include "verify_cases.h"
-#include "verify_variants.h"
+#include "check.h"
 
 typedef struct {
     const char *name;
@@ -31,6 +34,9 @@ typedef struct {
     map_slot maps[32];
     int nmaps;
     int differ, compared, skipped;
+    retro_check chk;       /* every variant this CPU runs, and the frames of the current row */
+    const char *case_name; /* the row being checked, for diff image names */
+    int mode, W, H;
 } verify_run;
 
 static const retro_map *get_map(verify_run *v, const char *name, char *err, size_t n)
@@ -89,41 +95,49 @@ static void write_diff(verify_run *v, const char *name, const uint32_t *ref, con
     free(img);
 }
 
-/* Renders the case with one variant and compares it with ref; prints the cell. */
-static void check_variant(verify_run *v, verify_variant *var, retro_mode mode, player_t *p,
-                          ctx_t *c, const uint32_t *ref, const char *case_name)
+/* Prints one variant's cell of the table and writes a diff image for a mismatch. */
+static void report_cell(void *user, const retro_check_variant *var, const retro_check_result *r)
 {
-    size_t n = (size_t)c->scr_width * (size_t)c->scr_height;
-    /* A poison fill exposes a write-once kernel that leaves a pixel unwritten. */
-    for (size_t i = 0; i < n; i++)
-        c->out[i] = 0x01020300u ^ (uint32_t)i;
-    retro_err e = verify_variant_render(var, mode, p, c);
+    verify_run *v = user;
     char cell[64];
-    if (e) {
-        snprintf(cell, sizeof cell, "error: %s", retro_strerror(e));
-        v->differ++;
+    if (!r->ran) {
+        snprintf(cell, sizeof cell, "-");
+    } else if (r->err) {
+        snprintf(cell, sizeof cell, "error: %s", retro_strerror(r->err));
+    } else if (!r->differ) {
+        snprintf(cell, sizeof cell, "identical");
     } else {
-        size_t bad = 0, first = 0;
-        for (size_t i = 0; i < n; i++)
-            if (c->out[i] != ref[i] && bad++ == 0)
-                first = i;
-        if (!bad) {
-            snprintf(cell, sizeof cell, "identical");
-        } else {
-            int W = c->scr_width, H = c->scr_height;
-            snprintf(cell, sizeof cell, "%zu px differ, first (%d,%d)", bad, (int)(first % (size_t)W) + 1,
-                     H - (int)(first / (size_t)W));
-            char name[256];
-            snprintf(name, sizeof name, "%s-%s-%s", case_name, retro_mode_name(mode), var->label);
-            write_diff(v, name, ref, c->out, W, H);
-            v->differ++;
-        }
+        snprintf(cell, sizeof cell, "%zu px differ, first (%d,%d)", r->differ, r->u, r->r);
+        char name[256];
+        snprintf(name, sizeof name, "%s-%s-%s", v->case_name, retro_mode_name((retro_mode)v->mode), var->label);
+        for (char *q = name; *q; q++)
+            *q = *q == '/' ? '_' : *q;
+        write_diff(v, name, v->chk.ref, v->chk.out, v->W, v->H);
     }
-    v->compared++;
+    if (r->ran)
+        v->compared++;
     printf(" | %-*s", VERIFY_CELL_WIDTH, cell);
 }
 
-static int run_case(verify_run *v, const verify_case *vc, verify_variant *vars, int nvars)
+/* One row of the table: the reference, then every variant through the checker. */
+static void check_row(verify_run *v, const char *case_name, int mode, const retro_effects *fx,
+                      const player_t *p, const ctx_t *c)
+{
+    v->case_name = case_name;
+    v->mode = mode;
+    v->W = c->scr_width;
+    v->H = c->scr_height;
+    printf("%-22s %-6s", case_name, retro_mode_name((retro_mode)mode));
+    retro_err e = retro_check_frame(&v->chk, mode, fx, p, c, report_cell, v, &v->differ);
+    if (e) {
+        printf(" | %s failed: %s", v->chk.family->reference, retro_strerror(e));
+        v->differ++;
+    }
+    printf("\n");
+    fflush(stdout);
+}
+
+static int run_case(verify_run *v, const verify_case *vc)
 {
     char err[512];
     const retro_map *m = get_map(v, vc->map, err, sizeof err);
@@ -138,45 +152,17 @@ static int run_case(verify_run *v, const verify_case *vc, verify_variant *vars, 
     }
     player_t p;
     player_for(vc, m, &p);
-    size_t n = (size_t)vc->W * (size_t)vc->H;
-    uint32_t *ref = malloc(n * sizeof *ref), *out = malloc(n * sizeof *out);
-    if (!ref || !out) {
-        free(ref);
-        free(out);
-        fprintf(stderr, "retro verify: out of memory\n");
-        return CLI_EBADINPUT;
-    }
     for (int mode = 0; mode < RETRO_MODE_COUNT; mode++) {
         if (mode == RETRO_MODE_COURSE && m->size < 2)
             continue;
-        ctx_t c = {vc->W, vc->H, m->size, vc->D, 0x66a3ff00u, m->height, m->color, ref};
-        retro_ctx rc;
-        retro_ctx_init(&rc);
-        retro_err e = retro_render(&rc, retro_kernel_find("naive"), (retro_mode)mode, &p, &c);
-        retro_ctx_free(&rc);
-        printf("%-22s %-6s", vc->name, retro_mode_name((retro_mode)mode));
-        if (e) {
-            printf(" | naive failed: %s\n", retro_strerror(e));
-            v->differ++;
-            continue;
-        }
-        c.out = out;
-        for (int k = 0; k < nvars; k++) {
-            if (!retro_kernel_has_mode(vars[k].kernel, (retro_mode)mode))
-                printf(" | %-*s", VERIFY_CELL_WIDTH, "-");
-            else
-                check_variant(v, &vars[k], (retro_mode)mode, &p, &c, ref, vc->name);
-        }
-        printf("\n");
-        fflush(stdout);
+        ctx_t c = {vc->W, vc->H, m->size, vc->D, 0x66a3ff00u, m->height, m->color, NULL};
+        check_row(v, vc->name, mode, NULL, &p, &c);
     }
-    free(ref);
-    free(out);
     return 0;
 }
 
-/* One effect case: naive with the effects against every variant that renders them. */
-static int run_fx_case(verify_run *v, const verify_fx_case *vc, verify_variant *vars, int nvars)
+/* One effect case: the reference with the effects against every variant that renders them. */
+static int run_fx_case(verify_run *v, const verify_fx_case *vc)
 {
     char err[512];
     const retro_map *m = get_map(v, vc->map, err, sizeof err);
@@ -186,12 +172,7 @@ static int run_fx_case(verify_run *v, const verify_fx_case *vc, verify_variant *
     }
     size_t cells = (size_t)m->size * (size_t)m->size;
     uint8_t *h1 = malloc(cells);
-    enum { W = 320, H = 240 };
-    uint32_t *ref = malloc(sizeof(uint32_t) * W * H), *out = malloc(sizeof(uint32_t) * W * H);
-    if (!h1 || !ref || !out) {
-        free(h1);
-        free(ref);
-        free(out);
+    if (!h1) {
         fprintf(stderr, "retro verify: out of memory\n");
         return CLI_EBADINPUT;
     }
@@ -204,36 +185,12 @@ static int run_fx_case(verify_run *v, const verify_fx_case *vc, verify_variant *
     fx.pitch = vc->pitch;
     fx.morph_height = h1;
     fx.morph_t = 0.37f;
-    verify_case pose = {vc->name, vc->map, NAN, NAN, vc->angle, 60, 1, W, H, 800, 1};
+    verify_case pose = {vc->name, vc->map, NAN, NAN, vc->angle, 60, 1, 320, 240, 800, 1};
     player_t p;
     player_for(&pose, m, &p);
-    ctx_t c = {W, H, m->size, 800, 0x66a3ff00u, m->height, m->color, ref};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    rc.fx = &fx;
-    retro_err e = retro_render(&rc, retro_kernel_find("naive"), RETRO_MODE_EXACT, &p, &c);
-    retro_ctx_free(&rc);
-    printf("%-22s %-6s", vc->name, "exact");
-    if (e) {
-        printf(" | naive failed: %s\n", retro_strerror(e));
-        v->differ++;
-    } else {
-        c.out = out;
-        for (int k = 0; k < nvars; k++) {
-            vars[k].ctx.fx = &fx;
-            if (!retro_kernel_has_mode(vars[k].kernel, (fx.flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT) ||
-                ((fx.flags & RETRO_FX_PER_SAMPLE) & ~vars[k].kernel->fx))
-                printf(" | %-*s", VERIFY_CELL_WIDTH, "-");
-            else
-                check_variant(v, &vars[k], RETRO_MODE_EXACT, &p, &c, ref, vc->name);
-            vars[k].ctx.fx = NULL;
-        }
-        printf("\n");
-    }
-    fflush(stdout);
+    ctx_t c = {320, 240, m->size, 800, 0x66a3ff00u, m->height, m->color, NULL};
+    check_row(v, vc->name, RETRO_MODE_EXACT, &fx, &p, &c);
     free(h1);
-    free(ref);
-    free(out);
     return 0;
 }
 
@@ -241,9 +198,10 @@ static void help(void)
 {
     printf("usage: retro verify [--quick] [-k KERNEL] [--out DIR] [--maps DIR]\n\n"
            "Renders a fixed set of cases (src/cli/verify_cases.c) with every kernel in every mode\n"
-           "it supports, at every ISA level and thread count it runs with here, and compares each\n"
-           "frame with naive of the same mode byte for byte. Exit 0 when all are identical, 1 on\n"
-           "any difference (a diff image per mismatch goes to DIR, default results/verify).\n"
+           "it supports, at every ISA level and thread count it runs with here (column titles\n"
+           "kernel/level[/threads]), and compares each frame with naive of the same mode byte for\n"
+           "byte. Exit 0 when all are identical, 1 on any difference (a diff image per mismatch\n"
+           "goes to DIR, default results/verify).\n"
            "  --quick     the reduced set `make check` runs\n"
            "  -k KERNEL   only this kernel\n"
            "  --out DIR   where diff images of mismatches go (default results/verify)\n"
@@ -283,11 +241,11 @@ int cmd_verify(int argc, char **argv)
         return CLI_EBADINPUT;
     v.mapsdir = mapsdir;
 
-    verify_variant vars[VERIFY_MAX_VARIANTS];
-    int nvars = verify_variants(vars, VERIFY_MAX_VARIANTS, v.only);
+    if (retro_check_init(&v.chk, &retro_family_voxel, v.only, 3))
+        return cli_error("verify", "kernel '%s' is not a voxel kernel", v.only);
     printf("%-22s %-6s", "case", "mode");
-    for (int k = 0; k < nvars; k++)
-        printf(" | %-*s", VERIFY_CELL_WIDTH, vars[k].label);
+    for (int k = 0; k < v.chk.n; k++)
+        printf(" | %-*s", VERIFY_CELL_WIDTH, v.chk.v[k].label);
     printf("\n");
 
     struct timespec t0, t1;
@@ -295,15 +253,15 @@ int cmd_verify(int argc, char **argv)
     int status = 0;
     for (int i = 0; i < verify_case_count && !status; i++)
         if (!v.quick || verify_cases[i].quick)
-            status = run_case(&v, &verify_cases[i], vars, nvars);
+            status = run_case(&v, &verify_cases[i]);
     for (int i = 0; i < verify_fx_case_count && !status; i++)
         if (!v.quick || verify_fx_cases[i].quick)
-            status = run_fx_case(&v, &verify_fx_cases[i], vars, nvars);
+            status = run_fx_case(&v, &verify_fx_cases[i]);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     for (int i = 0; i < v.nmaps; i++)
         if (v.maps[i].state > 0)
             retro_map_free(&v.maps[i].map);
-    verify_variants_free(vars, nvars);
+    retro_check_free(&v.chk);
     if (status)
         return status;
     printf("%d comparisons, %d differ, %d cases skipped, %.1f s\n", v.compared, v.differ, v.skipped,

@@ -47,11 +47,9 @@ static int pick_kernel(const char *cmd, const render_opts *o, render_job *j)
     j->k = o->kernel ? retro_kernel_find(o->kernel) : retro_kernel_best(j->mode);
     if (!j->k)
         return cli_error(cmd, "unknown kernel '%s' (retro kernels lists them)", o->kernel);
-    if (!retro_kernel_has_mode(j->k, j->mode))
-        return cli_error(cmd, "kernel '%s' does not support mode %s", j->k->name,
-                         retro_mode_name(j->mode));
-    if (!retro_kernel_runs_here(j->k))
-        return cli_error(cmd, "kernel '%s' needs an ISA this CPU (or --isa) lacks", j->k->name);
+    char why[128];
+    if (retro_kernel_check(j->k, j->mode, j->is_scene ? fx : NULL, why, sizeof why))
+        return cli_error(cmd, "%s", why);
     return 0;
 }
 

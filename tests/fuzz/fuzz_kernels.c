@@ -13,19 +13,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check.h"
 #include "retro.h"
 
 #define MAX_S 33
 #define MAX_WH 64
-#define MAX_KERNELS 32
 #define MAX_THREADS 3
 /* Bounds the samples of one frame (W * D) so one input stays a few milliseconds under the
  * sanitizers; 2x2 screens and smaller may go far beyond that. */
 #define MAX_SAMPLES (1 << 14)
 #define FAR_SAMPLES (1 << 19)
-/* A low byte no colour has, so an unwritten pixel shows (map colours with a low byte, flag
- * bit 6, are kept off this value). */
-#define POISON 0xababababu
 
 typedef struct {
     const uint8_t *p;
@@ -63,19 +60,38 @@ static uint64_t mix64(uint64_t *s)
     return z ^ (z >> 31);
 }
 
-static const char *const levels[] = {"none", "sse2", "avx2", "avx512"};
-/* Contexts live across inputs, as in an application; maps are rewritten in place each input,
- * so every context is told (retro_ctx_map_changed). */
-static retro_ctx ctxs[MAX_KERNELS][MAX_THREADS + 1];
+/* The checker's variants and their contexts live across inputs, as in an application; maps
+ * are rewritten in place each input, so every context is told (retro_check_map_changed). */
+static retro_check chk;
+static int chk_ready;
 static uint8_t heights[MAX_S * MAX_S];
 static uint32_t colours[MAX_S * MAX_S];
-static uint32_t ref[MAX_WH * MAX_WH], out[MAX_WH * MAX_WH];
 
-static void describe(const player_t *p, const ctx_t *c, retro_mode mode, const char *level, int t)
+typedef struct {
+    const player_t *p;
+    const ctx_t *c;
+    retro_mode mode;
+} fuzz_case;
+
+static void describe(const fuzz_case *fc, const char *variant)
 {
-    fprintf(stderr, "case: mode %s, isa %s, %d threads, x=%a y=%a angle=%d height=%d, %dx%d, D=%d, S=%d\n",
-            retro_mode_name(mode), level, t, (double)p->x, (double)p->y, p->angle, p->height,
+    const player_t *p = fc->p;
+    const ctx_t *c = fc->c;
+    fprintf(stderr, "case: mode %s, %s, x=%a y=%a angle=%d height=%d, %dx%d, D=%d, S=%d\n",
+            retro_mode_name(fc->mode), variant, (double)p->x, (double)p->y, p->angle, p->height,
             c->scr_width, c->scr_height, c->distance, c->map_size);
+}
+
+/* Aborts with the case on a variant that failed or differs from naive. */
+static void abort_on_mismatch(void *user, const retro_check_variant *v, const retro_check_result *r)
+{
+    if (!r->ran || (!r->err && !r->differ))
+        return;
+    char line[256];
+    retro_check_describe(&chk, v, r, line, sizeof line);
+    describe(user, v->label);
+    fprintf(stderr, "%s\n", line);
+    abort();
 }
 
 /* OpenMP workers of the omp kernel would otherwise spin for 200 ms (libomp) after every
@@ -94,8 +110,11 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    if (retro_kernel_count > MAX_KERNELS)
-        abort();
+    if (!chk_ready) {
+        if (retro_check_init(&chk, &retro_family_voxel, NULL, MAX_THREADS))
+            abort();
+        chk_ready = 1;
+    }
     reader r = {data, size};
     unsigned flags = take(&r, 1);
     player_t p = {0};
@@ -108,7 +127,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int S = 1 + (int)(take(&r, 1) % MAX_S);
     uint32_t sky = take(&r, 3) << 8;
     retro_mode mode = (retro_mode)((flags & 7) % RETRO_MODE_COUNT);
-    const char *level = levels[(flags >> 3) & 3];
+    int level = (int)((flags >> 3) & 3);
     int threads = 1 + (int)((flags >> 5) % MAX_THREADS);
     if (mode == RETRO_MODE_COURSE && S < 2)
         S = 2;
@@ -136,50 +155,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         heights[i] = (uint8_t)h;
         colours[i] = c;
     }
-    ctx_t c = {W, H, S, D, sky, heights, colours, ref};
-    size_t n = (size_t)W * (size_t)H;
+    ctx_t c = {W, H, S, D, sky, heights, colours, NULL};
+    fuzz_case fc = {&p, &c, mode};
 
-    for (int k = 0; k < MAX_KERNELS; k++)
-        for (int t = 0; t <= MAX_THREADS; t++)
-            retro_ctx_map_changed(&ctxs[k][t]);
-    retro_cpu_limit(level);
-    for (size_t i = 0; i < n; i++)
-        ref[i] = POISON;
-    retro_err e = retro_render(&ctxs[0][0], &retro_kernels[0], mode, &p, &c);
+    retro_check_map_changed(&chk);
+    /* The input picks one ISA level (levels this CPU lacks run nothing but naive) and one
+     * thread count for threaded kernels. */
+    chk.select_level = level < chk.level ? level : chk.level;
+    chk.select_threads = threads;
+    retro_err e = retro_check_frame(&chk, mode, NULL, &p, &c, abort_on_mismatch, &fc, NULL);
     if (e) {
-        describe(&p, &c, mode, level, 0);
-        fprintf(stderr, "naive failed on a valid input: %s\n", retro_strerror(e));
+        describe(&fc, "naive");
+        fprintf(stderr, "naive failed on a valid input or left a pixel unwritten: %s\n", retro_strerror(e));
         abort();
     }
-    for (size_t i = 0; i < n; i++)
-        if (ref[i] == POISON) {
-            describe(&p, &c, mode, level, 0);
-            fprintf(stderr, "naive left pixel %zu unwritten\n", i);
-            abort();
-        }
-    c.out = out;
-    for (size_t k = 1; k < retro_kernel_count; k++) {
-        const retro_kernel *kr = &retro_kernels[k];
-        if (!retro_kernel_runs_here(kr) || !retro_kernel_has_mode(kr, mode))
-            continue;
-        int t = kr->flags & RETRO_KF_THREADED ? threads : 0;
-        for (size_t i = 0; i < n; i++)
-            out[i] = POISON;
-        ctxs[k][t].threads = t;
-        e = retro_render(&ctxs[k][t], kr, mode, &p, &c);
-        size_t at = 0;
-        while (!e && at < n && out[at] == ref[at])
-            at++;
-        if (e || at < n) {
-            describe(&p, &c, mode, level, t);
-            if (e)
-                fprintf(stderr, "%s failed: %s\n", kr->name, retro_strerror(e));
-            else
-                fprintf(stderr, "%s differs from naive at pixel (u=%zu, r=%zu): %08x, naive %08x\n",
-                        kr->name, at % (size_t)W + 1, (size_t)H - at / (size_t)W, out[at], ref[at]);
-            abort();
-        }
-    }
-    retro_cpu_limit(NULL);
     return 0;
 }

@@ -61,7 +61,7 @@ typedef struct retro_sample_counts {
     uint64_t windows;   /* windows it read */
 } retro_sample_counts;
 extern retro_sample_counts retro_ybuffer_counts;
-void retro_kernel_ybuffer_counted(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 
 /* Whether the ybuffer strip skips this frame: mode exact with a pyramid (any per-sample
  * effects: fog changes colours only, bilinear is covered by the bound). */

@@ -90,8 +90,9 @@ static void course(const retro_frame *f)
     }
 }
 
-void retro_kernel_naive(const retro_frame *f, retro_ctx *rc)
+void retro_kernel_naive(const void *frame, retro_ctx *rc)
 {
+    const retro_frame *f = frame;
     (void)rc;
     fill_sky(f);
     if (f->mode == RETRO_MODE_COURSE)

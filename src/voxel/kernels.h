@@ -23,12 +23,16 @@ void retro_simd_offer_packed(retro_ctx *rc);
  * per-sample effects fx. */
 retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx);
 
-void retro_kernel_naive(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_simd_sse2(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_simd_avx2(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_simd_avx512(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_omp(const retro_frame *f, retro_ctx *rc);
-void retro_kernel_pthreads(const retro_frame *f, retro_ctx *rc);
+void retro_kernel_naive(const void *frame, retro_ctx *rc);
+void retro_kernel_ybuffer(const void *frame, retro_ctx *rc);
+void retro_kernel_simd_sse2(const void *frame, retro_ctx *rc);
+void retro_kernel_simd_avx2(const void *frame, retro_ctx *rc);
+void retro_kernel_simd_avx512(const void *frame, retro_ctx *rc);
+void retro_kernel_omp(const void *frame, retro_ctx *rc);
+void retro_kernel_pthreads(const void *frame, retro_ctx *rc);
+
+
+/* The voxel family's mode names, indexed by retro_mode (src/voxel/frame.c). */
+extern const char *const retro_voxel_mode_names[RETRO_MODE_COUNT];
 
 #endif

@@ -5,6 +5,7 @@
 
 #include "retro.h"
 #include "retro_internal.h"
+#include "kernels.h"
 #include "retro_scene.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
@@ -405,17 +406,17 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     return RETRO_OK;
 }
 
-static const char *const mode_names[RETRO_MODE_COUNT] = {"exact", "course", "truth", "fixed", "lod"};
+const char *const retro_voxel_mode_names[RETRO_MODE_COUNT] = {"exact", "course", "truth", "fixed", "lod"};
 
 const char *retro_mode_name(retro_mode mode)
 {
-    return (unsigned)mode < RETRO_MODE_COUNT ? mode_names[mode] : "?";
+    return (unsigned)mode < RETRO_MODE_COUNT ? retro_voxel_mode_names[mode] : "?";
 }
 
 int retro_mode_parse(const char *name, retro_mode *mode)
 {
     for (int m = 0; m < RETRO_MODE_COUNT; m++)
-        if (!strcmp(name, mode_names[m])) {
+        if (!strcmp(name, retro_voxel_mode_names[m])) {
             *mode = (retro_mode)m;
             return 0;
         }

@@ -54,8 +54,9 @@ static int pt_threads(const retro_ctx *rc)
     return t > PT_MAX_THREADS ? PT_MAX_THREADS : t;
 }
 
-void retro_kernel_pthreads(const retro_frame *f, retro_ctx *rc)
+void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
 {
+    const retro_frame *f = frame;
     int T = pt_threads(rc);
     /* Each thread's two accumulator arrays start on their own 64-byte line. */
     size_t stride = ((size_t)f->D + 15) / 16 * 16;

@@ -360,8 +360,9 @@ void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int
         run(f, qx, qy, c0, c0 + CHUNK < u1 ? c0 + CHUNK : u1);
 }
 
-void retro_kernel_ybuffer(const retro_frame *f, retro_ctx *rc)
+void retro_kernel_ybuffer(const void *frame, retro_ctx *rc)
 {
+    const retro_frame *f = frame;
     retro_course_start(f, rc->qx, rc->qy);
     retro_strip_ybuffer(f, rc->qx, rc->qy, 0, f->W);
 }

@@ -5,14 +5,15 @@
 
 #include "retro.h"
 
-static const struct {
-    const char *name;
-    unsigned mask; /* features allowed at this level */
-} levels[] = {
-    {"none", 0},
-    {"sse2", RETRO_CPU_SSE2},
-    {"avx2", RETRO_CPU_SSE2 | RETRO_CPU_AVX2},
-    {"avx512", RETRO_CPU_SSE2 | RETRO_CPU_AVX2 | RETRO_CPU_AVX512},
+/* The ISA levels, lowest first, each allowing the features of the ones below: the one list
+ * of their names (retro_isa_names) and the features each allows. */
+const char *const retro_isa_names[] = {"none", "sse2", "avx2", "avx512"};
+const int retro_isa_count = (int)(sizeof retro_isa_names / sizeof retro_isa_names[0]);
+static const unsigned level_mask[] = {
+    0,
+    RETRO_CPU_SSE2,
+    RETRO_CPU_SSE2 | RETRO_CPU_AVX2,
+    RETRO_CPU_SSE2 | RETRO_CPU_AVX2 | RETRO_CPU_AVX512,
 };
 
 static unsigned detected(void)
@@ -39,9 +40,9 @@ static unsigned detected(void)
 
 static int level_of(const char *name)
 {
-    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++)
-        if (!strcmp(levels[i].name, name))
-            return (int)i;
+    for (int i = 0; i < retro_isa_count; i++)
+        if (!strcmp(retro_isa_names[i], name))
+            return i;
     return -1;
 }
 
@@ -67,14 +68,19 @@ unsigned retro_cpu_features(void)
         limit = env && *env ? level_of(env) : -1;
     }
     unsigned f = detected();
-    return limit >= 0 ? f & levels[limit].mask : f;
+    return limit >= 0 ? f & level_mask[limit] : f;
+}
+
+int retro_cpu_level(unsigned features)
+{
+    int level = 0;
+    for (int i = 0; i < retro_isa_count; i++)
+        if ((features & level_mask[i]) == level_mask[i])
+            level = i;
+    return level;
 }
 
 const char *retro_cpu_level_name(unsigned features)
 {
-    const char *name = levels[0].name;
-    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++)
-        if ((features & levels[i].mask) == levels[i].mask)
-            name = levels[i].name;
-    return name;
+    return retro_isa_names[retro_cpu_level(features)];
 }

@@ -144,8 +144,9 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
         else                                                                                        \
             retro_strip_ybuffer(f, qx, qy, u0, u1);                                                 \
     }                                                                                               \
-    void retro_kernel_simd_##isa(const retro_frame *f, retro_ctx *rc)                              \
+    void retro_kernel_simd_##isa(const void *frame, retro_ctx *rc)                                 \
     {                                                                                               \
+        const retro_frame *f = frame;                                                               \
         retro_simd_frame sf;                                                                        \
         if (!retro_simd_check(f, &sf)) {                                                            \
             retro_kernel_ybuffer(f, rc);                                                            \

@@ -28,8 +28,9 @@ static int chunk_columns(void)
     return c > 0 ? c : 64;
 }
 
-void retro_kernel_omp(const retro_frame *f, retro_ctx *rc)
+void retro_kernel_omp(const void *frame, retro_ctx *rc)
 {
+    const retro_frame *f = frame;
     retro_strip_fn strip = retro_best_strip(f->mode, f->fx);
     int threads = retro_pool_threads(rc);
     retro_pool *pool = retro_pool_get(rc, threads, f->D);

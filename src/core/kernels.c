@@ -1,0 +1,172 @@
+/* The one table of kernels, every family's, each family's rows slowest first:
+ * retro_kernel_best() takes the last row this CPU runs. Adding a kernel is its file(s), one
+ * prototype in its family's header and one row here; adding a family is its folder, its
+ * descriptor in retro_families[] and its rows. */
+#include <stdio.h>
+#include <string.h>
+
+#include "kernels.h"
+#include "retro_scene.h"
+
+/* Every mode, the accuracy variants of docs/ACCURACY.md included. */
+#define ALL ((1u << RETRO_MODE_COUNT) - 1)
+#define EXACT RETRO_MODE_BIT(RETRO_MODE_EXACT)
+#define EXACT_COURSE (EXACT | RETRO_MODE_BIT(RETRO_MODE_COURSE))
+/* Effects: every one, or all but those needing code the SIMD strips lack (docs/EFFECTS.md). */
+#define FX_ALL RETRO_FX_ALL
+#define FX_SIMD (RETRO_FX_ALL & ~(RETRO_FX_BILINEAR | RETRO_FX_LOD))
+/* Each ISA level includes the ones below it, as the files are compiled (cpu.c levels). */
+#define ISA_SSE2 RETRO_CPU_SSE2
+#define ISA_AVX2 (ISA_SSE2 | RETRO_CPU_AVX2)
+#define ISA_AVX512 (ISA_AVX2 | RETRO_CPU_AVX512)
+#define VOXEL &retro_family_voxel
+
+const retro_family *const retro_families[] = {&retro_family_voxel};
+const size_t retro_family_count = sizeof retro_families / sizeof retro_families[0];
+
+const retro_kernel retro_kernels[] = {
+    {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL, FX_ALL, VOXEL},
+    {"ybuffer", retro_kernel_ybuffer, 0, ALL, RETRO_KF_WRITE_ONCE,
+     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer, FX_ALL, VOXEL},
+    {"simd-sse2", retro_kernel_simd_sse2, ISA_SSE2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", retro_strip_simd_sse2, FX_SIMD,
+     VOXEL},
+    {"simd-avx2", retro_kernel_simd_avx2, ISA_AVX2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", retro_strip_simd_avx2, FX_SIMD,
+     VOXEL},
+    {"simd-avx512", retro_kernel_simd_avx512, ISA_AVX512, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores", retro_strip_simd_avx512,
+     FX_SIMD, VOXEL},
+    /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
+    {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
+     "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},
+    {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
+     "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX_ALL, VOXEL},
+};
+
+const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
+
+const retro_kernel *retro_kernel_find(const char *name)
+{
+    for (size_t i = 0; i < retro_kernel_count; i++)
+        if (!strcmp(retro_kernels[i].name, name))
+            return &retro_kernels[i];
+    return NULL;
+}
+
+const retro_family *retro_family_find(const char *name)
+{
+    for (size_t i = 0; i < retro_family_count; i++)
+        if (!strcmp(retro_families[i]->name, name))
+            return retro_families[i];
+    return NULL;
+}
+
+const retro_kernel *retro_family_reference(const retro_family *fam)
+{
+    const retro_kernel *k = retro_kernel_find(fam->reference);
+    return k && k->family == fam ? k : NULL;
+}
+
+const char *retro_family_mode_name(const retro_family *fam, int mode)
+{
+    return mode >= 0 && mode < fam->mode_count ? fam->mode_names[mode] : "?";
+}
+
+int retro_family_mode_parse(const retro_family *fam, const char *name, int *mode)
+{
+    for (int m = 0; m < fam->mode_count; m++)
+        if (!strcmp(name, fam->mode_names[m])) {
+            *mode = m;
+            return 0;
+        }
+    return -1;
+}
+
+int retro_kernel_runs_here(const retro_kernel *k)
+{
+    return (k->cpu & retro_cpu_features()) == k->cpu;
+}
+
+int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode)
+{
+    return (int)mode >= 0 && (int)mode < k->family->mode_count && (k->modes & RETRO_MODE_BIT(mode)) != 0;
+}
+
+static unsigned fx_flags(const retro_effects *fx)
+{
+    return fx ? fx->flags & RETRO_FX_ALL : 0;
+}
+
+retro_err retro_kernel_check(const retro_kernel *k, int mode, const retro_effects *fx, char *why, size_t n)
+{
+    char buf[128];
+    if (!why) {
+        why = buf;
+        n = sizeof buf;
+    }
+    const retro_family *fam = k->family;
+    int m = fam->effective_mode(mode, fx);
+    unsigned missing = fx_flags(fx) & ~k->fx;
+    if (mode < 0 || mode >= fam->mode_count) {
+        snprintf(why, n, "%s has no mode %d", fam->name, mode);
+        return RETRO_EINVAL;
+    }
+    if (!retro_kernel_has_mode(k, (retro_mode)m)) {
+        snprintf(why, n, "kernel %s does not render mode %s", k->name, retro_family_mode_name(fam, m));
+        return RETRO_EUNSUPPORTED;
+    }
+    if (missing) {
+        snprintf(why, n, "kernel %s does not render %s", k->name, retro_fx_name(missing & -missing));
+        return RETRO_EUNSUPPORTED;
+    }
+    if (!retro_kernel_runs_here(k)) {
+        snprintf(why, n, "this CPU (at ISA level %s) lacks %s for kernel %s",
+                 retro_cpu_level_name(retro_cpu_features()), retro_cpu_level_name(k->cpu), k->name);
+        return RETRO_EUNSUPPORTED;
+    }
+    snprintf(why, n, "ok");
+    return RETRO_OK;
+}
+
+const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *fx)
+{
+    const retro_kernel *best = NULL;
+    for (size_t i = 0; i < retro_kernel_count; i++) {
+        const retro_kernel *k = &retro_kernels[i];
+        if (k->family == &retro_family_voxel && retro_kernel_check(k, (int)mode, fx, NULL, 0) == RETRO_OK)
+            best = k;
+    }
+    return best;
+}
+
+const retro_kernel *retro_kernel_best(retro_mode mode)
+{
+    return retro_kernel_best_fx(mode, NULL);
+}
+
+retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx)
+{
+    retro_strip_fn best = NULL;
+    for (size_t i = 0; i < retro_kernel_count; i++) {
+        const retro_kernel *k = &retro_kernels[i];
+        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode) && !(fx & ~k->fx))
+            best = k->strip;
+    }
+    return best;
+}
+
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c)
+{
+    if (!k || !rc)
+        return RETRO_EINVAL;
+    retro_err e = retro_kernel_check(k, mode, rc->fx, NULL, 0);
+    if (e)
+        return e;
+    const void *frame = NULL;
+    e = k->family->setup(rc, k->family->effective_mode(mode, rc->fx), p, c, &frame);
+    if (e)
+        return e;
+    k->fn(frame, rc);
+    return RETRO_OK;
+}
