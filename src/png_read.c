@@ -31,8 +31,8 @@ static uint32_t be32(const unsigned char *p)
 
 /* The largest file a PNG of this header may be: its filtered rows stored uncompressed (deflate
  * adds 5 bytes per 64 KiB), an eighth more for chunking, and PNG_EXTRA of other chunks. */
-static int file_max(const char *path, const unsigned char *b, size_t len, size_t *max, char *err,
-                    size_t n)
+static int file_max(const char *path, const unsigned char *b, size_t len, size_t *max,
+                    size_t *raw_out, char *err, size_t n)
 {
     if (len < 33 || be32(b + 8) != 13 || memcmp(b + 12, "IHDR", 4))
         return fail(err, n, "%s: bad PNG: no IHDR chunk first", path);
@@ -47,13 +47,17 @@ static int file_max(const char *path, const unsigned char *b, size_t len, size_t
     size_t row = 1 + ((size_t)w * channels[type] * depth + 7) / 8;
     size_t raw = row * h;
     *max = raw + raw / 8 + PNG_EXTRA;
+    *raw_out = raw;
     return 0;
 }
 
-/* Walks the chunks: each must fit in the file, and IEND must end it. */
-static int chunks_end(const char *path, const unsigned char *b, size_t len, char *err, size_t n)
+/* Walks the chunks: each must fit in the file, and IEND must end it. *idat: the image data's
+ * bytes. */
+static int chunks_end(const char *path, const unsigned char *b, size_t len, size_t *idat,
+                      char *err, size_t n)
 {
     size_t at = 8;
+    *idat = 0;
     for (;;) {
         if (len - at < 12)
             return fail(err, n, "%s: bad PNG: truncated (no IEND chunk)", path);
@@ -61,6 +65,8 @@ static int chunks_end(const char *path, const unsigned char *b, size_t len, char
         if (clen > len - at - 12)
             return fail(err, n, "%s: bad PNG: truncated chunk", path);
         int iend = !memcmp(b + at + 4, "IEND", 4);
+        if (!memcmp(b + at + 4, "IDAT", 4))
+            *idat += clen;
         at += 12 + clen;
         if (iend)
             break;
@@ -117,8 +123,8 @@ static int decode(const char *path, unsigned char *b, size_t len, uint32_t **dat
 int retro_png_read(retro_rfile *f, const unsigned char *head, size_t hl, uint32_t **data,
                    int *w, int *h, char *err, size_t n)
 {
-    size_t max = 0;
-    if (file_max(f->path, head, hl, &max, err, n))
+    size_t max = 0, raw = 0, idat = 0;
+    if (file_max(f->path, head, hl, &max, &raw, err, n))
         return -1;
     if (f->size > max)
         return fail(err, n, "%s: %zu bytes, more than a PNG of its size may hold (%zu)", f->path,
@@ -128,9 +134,15 @@ int retro_png_read(retro_rfile *f, const unsigned char *head, size_t hl, uint32_
         return fail(err, n, "%s: out of memory", f->path);
     memcpy(b, head, hl);
     int r = retro_rfile_read(f, b + hl, f->size - hl, err, n) || retro_rfile_at_end(f, err, n) ||
-                    chunks_end(f->path, b, f->size, err, n)
+                    chunks_end(f->path, b, f->size, &idat, err, n)
                 ? -1
-                : decode(f->path, b, f->size, data, w, h, err, n);
+                : 0;
+    /* Deflate expands at most 1032-fold: image data too short for the declared size is refused
+     * before the decoder allocates that size. */
+    if (!r && raw / 1032 > idat + 64)
+        r = fail(err, n, "%s: truncated: %zu bytes of image data cannot hold %zu", f->path, idat, raw);
+    if (!r)
+        r = decode(f->path, b, f->size, data, w, h, err, n);
     free(b);
     return r;
 }
