@@ -53,7 +53,9 @@ done
 "$retro" render $map -s 64x48 -m course -k naive -o "$tmp/ok.ppm" && head -c 2 "$tmp/ok.ppm" | grep -q P6 ||
   { echo "FAIL: render to ppm"; fails=$((fails + 1)); }
 "$retro" kernels | awk '{print $1}' | grep -qx naive || { echo "FAIL: kernels lists naive first column"; fails=$((fails + 1)); }
-"$retro" accuracy --poses 1 -o "$tmp/acc.md" --chart "$tmp/acc.svg" 2>/dev/null &&
+# This seed's first pose lies on the 1024 maps' edge (y rounds to 1024): make asan sees any
+# read past the height map.
+"$retro" accuracy --poses 1 --seed 8732044540224338163 -o "$tmp/acc.md" --chart "$tmp/acc.svg" 2>/dev/null &&
   [ "$(grep -c '^| [a-z]' "$tmp/acc.md")" -ge 8 ] && grep -q '<svg' "$tmp/acc.svg" ||
   { echo "FAIL: retro accuracy table and chart"; fails=$((fails + 1)); }
 # binary32 and binary64 disagree only at cell and row boundaries: a large error means a frame

@@ -35,8 +35,8 @@ fi
 fail=0
 for src in tests/fuzz/fuzz_*.c; do
   t=$(basename "$src" .c)
-  # Frames cost far more than parsing a string: fewer mutations for the kernels.
-  case $t in fuzz_kernels) runs=400 ;; *) runs=2000 ;; esac
+  # Frames cost far more than parsing a string: fewer mutations where inputs render.
+  case $t in fuzz_kernels | fuzz_scene) runs=400 ;; *) runs=2000 ;; esac
   work="$probe/$t"
   mkdir -p "$work/corpus"
   cp tests/fuzz/corpus/"$t"/* "$work/corpus/"

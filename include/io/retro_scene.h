@@ -52,6 +52,9 @@ typedef struct retro_effects {
 void retro_effects_defaults(retro_effects *fx);
 
 #define RETRO_SCENE_MAX_KEYS 64
+/* The one rule for a distance given by a user, in a scene file or to the CLI (-d):
+ * RETRO_MIN_DISTANCE..RETRO_MAX_DISTANCE. D = 1 renders sky only (SEMANTICS.md). */
+#define RETRO_MIN_DISTANCE 1
 
 typedef struct retro_keyframe {
     float t;                   /* position along the path, 0..1 */

@@ -14,6 +14,23 @@ double acc_rand(uint64_t *s)
     return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
 }
 
+/* Reduced to [0, S) in the float the renderer gets, so the cell below is inside the map. */
+static float in_map(double v, int S)
+{
+    float f = (float)v;
+    return f >= (float)S ? f - (float)S : f;
+}
+
+void acc_pose(uint64_t *rng, int S, const uint8_t *height, player_t *p)
+{
+    memset(p, 0, sizeof *p);
+    p->x = in_map(acc_rand(rng) * S, S);
+    p->y = in_map(acc_rand(rng) * S, S);
+    p->angle = (int)(acc_rand(rng) * 360);
+    size_t at = (size_t)p->y * (size_t)S + (size_t)p->x;
+    p->height = height[at] + 20 + (int)(acc_rand(rng) * 180);
+}
+
 /* The highest terrain row of column u: rows count from the bottom, out is top to bottom. */
 static int silhouette(const uint32_t *img, int W, int H, int u, uint32_t sky)
 {

@@ -5,6 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "render.h"
+
 typedef struct {
     double frames;
     double pixel_frac;   /* sum over frames of the fraction of differing pixels */
@@ -26,6 +28,10 @@ typedef struct {
 
 /* A uniform double in [0, 1) from a splitmix64 state: the poses are seeded and portable. */
 double acc_rand(uint64_t *state);
+/* A seeded random pose over an S x S height map: x, y in [0, S) (rand * S rounds up to S for
+ * draws near 1, so the position is reduced modulo S), angle 0..359, height 20..199 above the
+ * ground under it. */
+void acc_pose(uint64_t *rng, int S, const uint8_t *height, player_t *p);
 void acc_compare(acc_stats *s, const uint32_t *truth, const uint32_t *img, int W, int H, uint32_t sky);
 void acc_summary(const acc_stats *s, acc_row *row);
 /* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot). */

@@ -11,12 +11,17 @@
 
 int cli_error(const char *cmd, const char *fmt, ...)
 {
+    char msg[2048];
     va_list ap;
-    fprintf(stderr, "retro %s: ", cmd);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
+    /* One line whatever a quoted value holds: control bytes (a newline in a file name or an
+     * environment value) are shown as '?'. */
+    for (char *p = msg; *p; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+            *p = '?';
+    fprintf(stderr, "retro %s: %s\n", cmd, msg);
     return CLI_EBADINPUT;
 }
 
@@ -50,7 +55,9 @@ int cli_float(const char *s, float *out)
     char *end;
     errno = 0;
     float v = strtof(s, &end);
-    if (!*s || *end || errno == ERANGE || !isfinite(v))
+    /* ERANGE on underflow still gives the nearest float (a subnormal or 0), which is valid;
+     * on overflow it gives an infinity, refused as not finite. */
+    if (!*s || *end || !isfinite(v))
         return -1;
     *out = v;
     return 0;

@@ -178,12 +178,8 @@ int cmd_accuracy(int argc, char **argv)
         retro_ctx_map_changed(&rc);
         fprintf(stderr, "accuracy: %s, %ld poses...\n", scenes[s], poses);
         for (int n = 0; n < poses; n++) {
-            player_t p = {0};
-            p.x = (float)(acc_rand(&rng) * m.size);
-            p.y = (float)(acc_rand(&rng) * m.size);
-            p.angle = (int)(acc_rand(&rng) * 360);
-            size_t at = (size_t)p.y * (size_t)m.size + (size_t)p.x;
-            p.height = m.height[at] + 20 + (int)(acc_rand(&rng) * 180);
+            player_t p;
+            acc_pose(&rng, m.size, m.height, &p);
             for (int k = 0; k < nv; k++) {
                 vars[k].ms_y[vars[k].n] = time_variant(&rc, ybuffer, &vars[k], &m, &p, img, small);
                 vars[k].ms[vars[k].n++] = time_variant(&rc, retro_kernel_best(vars[k].mode), &vars[k], &m, &p,

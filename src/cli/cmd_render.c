@@ -25,7 +25,8 @@ static void help(void)
            "              a scene with [lod] defaults to lod\n"
            "  --lod L     mode lod's step growth: step = max(1, floor(d * L)) (default 0.02)\n"
            "  -s WxH      screen size (default 640x480)\n"
-           "  -d D        distance: samples at d = 1..D-1 (default 800)\n"
+           "  -d D        distance %d..%d: samples at d = 1..D-1, D = 1 is sky only (default\n"
+           "              800); a scene's [screen] distance follows the same rule\n"
            "  -p X,Y      position (default: the map's centre)\n"
            "  -z HEIGHT   camera height (default: 60 above the terrain and the mean height)\n"
            "  -a ANGLE    degrees, counter-clockwise from +x (default 0)\n"
@@ -36,7 +37,11 @@ static void help(void)
            "              image is the same, only slower\n"
            "  --stats     also print the samples the ybuffer kernel evaluates and those that\n"
            "              paint, and their share of the frame's samples (W x (D-1))\n"
-           "  -o OUT      output image, .ppm or .png; nothing is written on failure\n");
+           "  -o OUT      output image, .ppm or .png; nothing is written on failure\n"
+           "A render that would take more than a few seconds (the naive reference at a large\n"
+           "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
+           "environment variables read: docs/INPUT.md.\n",
+           RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE);
 }
 
 static int render_extra(void *user, const char *a, const char *v)

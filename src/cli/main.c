@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "env.h"
 
 /* The Makefile passes the version it installs under (retro.pc, the soname). */
 #ifndef RETRO_VERSION
@@ -33,6 +34,14 @@ static void usage(FILE *f)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].what);
 }
 
+static int wants_help(int argc, char **argv)
+{
+    for (int i = 2; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))
+            return 1;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -48,8 +57,13 @@ int main(int argc, char **argv)
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
+        if (!strcmp(argv[1], commands[i].name)) {
+            /* Before any work, as for a bad option; --help still answers. */
+            char err[256];
+            if (!wants_help(argc, argv) && retro_env_check(err, sizeof err))
+                return cli_error(commands[i].name, "%s", err);
             return commands[i].fn(argc - 1, argv + 1);
+        }
     fprintf(stderr, "retro: unknown command '%s' (retro --help lists them)\n", argv[1]);
     return CLI_EBADINPUT;
 }

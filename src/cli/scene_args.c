@@ -35,8 +35,9 @@ int render_opt(const char *cmd, render_opts *o, const char *a, const char *v)
                              v, RETRO_MAX_SCREEN, RETRO_MAX_PIXELS);
         o->have_size = 1;
     } else if (!strcmp(a, "-d")) {
-        if (cli_int(v, -2147483647L - 1, RETRO_MAX_DISTANCE, &o->D))
-            return cli_error(cmd, "bad distance '%s' (an integer up to %d)", v, RETRO_MAX_DISTANCE);
+        if (cli_int(v, RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE, &o->D))
+            return cli_error(cmd, "bad distance '%s' (an integer %d..%d)", v, RETRO_MIN_DISTANCE,
+                             RETRO_MAX_DISTANCE);
         o->have_d = 1;
     } else if (!strcmp(a, "-p")) {
         if (cli_pair(v, &o->x, &o->y))

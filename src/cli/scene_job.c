@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "scene_args.h"
+#include "work_estimate.h"
 
 /* The morph keyframe: only its heights are blended, so only its .pgm is read. */
 static int load_morph(const char *cmd, render_job *j)
@@ -82,6 +83,7 @@ static int open_job(const char *cmd, const render_opts *o, render_job *j)
     j->rc.lod = o->have_lod ? o->lod : (s->fx.flags & RETRO_FX_LOD) ? s->fx.lod : 0.0f;
     /* A plain map renders exactly as before scenes existed: no effects block at all. */
     j->rc.fx = j->is_scene ? &s->fx : NULL;
+    work_warn(cmd, j->k, W, H, D);
     return 0;
 }
 

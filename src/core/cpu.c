@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "env.h"
 #include "retro.h"
 
 /* The ISA levels, lowest first, each allowing the features of the ones below: the one list
@@ -46,6 +47,8 @@ static int level_of(const char *name)
     return -1;
 }
 
+int retro_cpu_level_index(const char *name) { return level_of(name); }
+
 static int limit = -2; /* -2: not read yet, -1: no limit */
 
 retro_err retro_cpu_limit(const char *level)
@@ -64,8 +67,10 @@ retro_err retro_cpu_limit(const char *level)
 unsigned retro_cpu_features(void)
 {
     if (limit == -2) {
+        /* A value that names no level limits to none: slower, still exact, and never an ISA
+         * the caller meant to exclude (the CLI refuses such a value first, src/core/env.c). */
         const char *env = getenv("RETRO_ISA");
-        limit = env && *env ? level_of(env) : -1;
+        limit = !env ? -1 : level_of(env) >= 0 ? level_of(env) : 0;
     }
     unsigned f = detected();
     return limit >= 0 ? f & level_mask[limit] : f;

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "out_file.h"
 #include "retro.h"
 #include "retro_maps.h"
 
@@ -84,18 +85,30 @@ out:
     return r;
 }
 
+/* Both files are written to temporaries first and renamed together (src/out_file.c): a
+ * failure leaves neither, and never a new .pgm beside an old colour map. */
 int retro_map_save(const char *prefix, const retro_map *m, int png, char *err, size_t n)
 {
-    size_t len = strlen(prefix) + 8;
-    char *path = malloc(len);
-    if (!path)
-        return fail(err, n, "out of memory");
-    snprintf(path, len, "%s.pgm", prefix);
-    int r = retro_gray_write(path, m->height, m->size, m->size, err, n);
-    if (!r) {
-        snprintf(path, len, "%s.%s", prefix, png ? "png" : "ppm");
-        r = retro_image_write(path, m->color, m->size, m->size, err, n);
+    size_t len = strlen(prefix) + 8, tlen = len + RETRO_TMP_EXTRA;
+    char *path[2] = {malloc(len), malloc(len)}, *tmp[2] = {malloc(tlen), malloc(tlen)};
+    int r = -1;
+    if (!path[0] || !path[1] || !tmp[0] || !tmp[1]) {
+        fail(err, n, "out of memory");
+        goto out;
     }
-    free(path);
+    snprintf(path[0], len, "%s.pgm", prefix);
+    snprintf(path[1], len, "%s.%s", prefix, png ? "png" : "ppm");
+    if (retro_gray_stage(path[0], m->height, m->size, m->size, tmp[0], tlen, err, n))
+        goto out;
+    if (retro_image_stage(path[1], m->color, m->size, m->size, tmp[1], tlen, err, n)) {
+        unlink(tmp[0]);
+        goto out;
+    }
+    r = retro_out_commit_pair(tmp, (const char *const *)path, err, n);
+out:
+    for (int i = 0; i < 2; i++) {
+        free(path[i]);
+        free(tmp[i]);
+    }
     return r;
 }

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "file_read.h"
 #include "retro.h"
 
 enum { SEC_SCENE, SEC_CAMERA, SEC_SCREEN, SEC_PATH, SEC_FOG, SEC_SHADE, SEC_WATER, SEC_BILINEAR,
@@ -45,6 +46,8 @@ static const struct {
 #define MAX_HEIGHT 1000000
 #define MAX_ANGLE 1000000
 #define MAX_FRAMES 100000
+/* A scene file is a few hundred bytes of text; this bounds what a hostile one makes us read. */
+#define MAX_FILE ((size_t)1 << 20)
 
 void retro_effects_defaults(retro_effects *fx)
 {
@@ -83,6 +86,7 @@ typedef struct parser {
     FILE *f;
     int line;               /* the line inih is parsing */
     int next;
+    size_t bytes;           /* read so far: the file may grow while read */
     int read_errno;
     int named;              /* a key since the last header: inih continues it on indented lines */
     int sec_line[SEC_COUNT]; /* first header of each section, for problems found at the end */
@@ -133,24 +137,43 @@ static void section_header(parser *P, const char *name)
     P->s->fx.flags |= SECTIONS[i].fx;
 }
 
-/* An fgets for inih that tracks lines and section headers the way ini_parse_stream reads them. */
+/* An fgets for inih that tracks lines and section headers the way ini_parse_stream reads them.
+ * It reads byte by byte to see what fgets hides: a NUL inside a line (refused: it would end
+ * the line early for inih and hide the rest of it) and the true length of a line. */
 static char *read_line(char *buf, int n, void *stream)
 {
     parser *P = stream;
-    if (!fgets(buf, n, P->f)) {
-        if (ferror(P->f))
-            P->read_errno = errno;
+    int c = EOF, len = 0, nul = 0, longer = 0;
+    while (P->bytes <= MAX_FILE && (c = getc(P->f)) != EOF) {
+        P->bytes++;
+        if (len < n - 1)
+            buf[len++] = (char)c;
+        else
+            longer = 1; /* skipped up to the line's end */
+        nul |= c == 0;
+        if (c == '\n')
+            break;
+    }
+    if (c == EOF && ferror(P->f)) {
+        P->read_errno = errno ? errno : EIO;
         return NULL;
     }
+    if (P->bytes > MAX_FILE) {
+        P->read_errno = EFBIG; /* grew past the limit since it was opened */
+        return NULL;
+    }
+    if (!len)
+        return NULL;
+    buf[len] = 0;
     P->line = P->next++;
-    size_t len = strlen(buf);
-    int c;
-    if (len == (size_t)n - 1 && buf[len - 1] != '\n' && (c = fgetc(P->f)) != EOF) {
-        while (c != '\n' && c != EOF)
-            c = fgetc(P->f);
+    if (longer) {
         fail(P, "line longer than %d characters", n - 3);
         /* Ends the line here, so no inih version goes on to swallow the next one. */
         buf[len - 1] = '\n';
+    }
+    if (nul) {
+        fail(P, "NUL byte in the line (a scene file is text)");
+        strcpy(buf, "\n"); /* inih sees an empty line */
     }
     const char *p = buf;
     if (P->line == 1 && !strncmp(p, "\xEF\xBB\xBF", 3))
@@ -176,7 +199,8 @@ static int get_float(parser *P, const char *sec, const char *key, const char *v,
     char *end;
     errno = 0;
     double d = strtod(v, &end);
-    if (!*v || *end || errno == ERANGE || !isfinite(d))
+    /* ERANGE on underflow gives a subnormal or zero, valid; an overflow gives an infinity. */
+    if (!*v || *end || !isfinite(d))
         return fail(P, "[%s] %s: bad number '%s'", sec, key, v);
     if (d < lo || d > hi)
         return fail(P, "[%s] %s: %s out of range (%g..%g)", sec, key, v, lo, hi);
@@ -333,7 +357,7 @@ static int on_key(parser *P, int sec, const char *k, const char *v)
             return 1;
         }
         if (KEY("distance"))
-            return INT(1, RETRO_MAX_DISTANCE, &s->D);
+            return INT(RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE, &s->D);
         break;
     case SEC_PATH:
         if (KEY("frames")) {
@@ -440,9 +464,12 @@ int retro_scene_load(const char *path, retro_scene *s, char *err, size_t errlen)
 {
     retro_scene_defaults(s);
     parser P = {.s = s, .path = path, .next = 1};
-    P.f = fopen(path, "r");
-    if (!P.f) {
+    retro_rfile rf;
+    if (retro_rfile_open(&rf, path, MAX_FILE, err, errlen))
+        return -1;
+    if (!(P.f = fdopen(rf.fd, "r"))) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        retro_rfile_close(&rf);
         return -1;
     }
     int line = ini_parse_stream(read_line, &P, handler, &P);

@@ -15,17 +15,18 @@
  * chunks of 16-32 lost to the cost each chunk of a strip carries (its constants, its first
  * distances) and guided scheduling gained nothing. RETRO_OMP_CHUNK overrides it. */
 #include <omp.h>
-#include <stdlib.h>
 
+#include "env.h"
 #include "kernels.h"
 #include "omp_pool.h"
 
-/* Columns per chunk: RETRO_OMP_CHUNK if set (for measuring), else 64. */
+/* Columns per chunk: RETRO_OMP_CHUNK if set to 1..RETRO_MAX_SCREEN (for measuring), else 64;
+ * the range keeps the chunk arithmetic below from overflowing. */
 static int chunk_columns(void)
 {
-    const char *e = getenv("RETRO_OMP_CHUNK");
-    int c = e ? atoi(e) : 0;
-    return c > 0 ? c : 64;
+    long c;
+    return retro_env_long("RETRO_OMP_CHUNK", 1, RETRO_MAX_SCREEN, &c, NULL, 0) == 1
+               ? (int)c : RETRO_OMP_CHUNK_DEFAULT;
 }
 
 void retro_kernel_omp(const void *frame, retro_ctx *rc)
