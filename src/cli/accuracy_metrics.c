@@ -74,6 +74,31 @@ void acc_summary(const acc_stats *s, acc_row *r)
     r->psnr = mse > 0 ? 10 * log10(255.0 * 255.0 / mse) : INFINITY;
 }
 
+/* A path as a gnuplot single-quoted string: there a quote is written twice and nothing else is
+ * special, so no file name can end the string and smuggle in a command (acc_path_ok() has
+ * already refused control characters, which would end the line). */
+static void put_gnuplot_string(FILE *g, const char *s)
+{
+    fputc('\'', g);
+    for (; *s; s++) {
+        if (*s == '\'')
+            fputc('\'', g);
+        fputc(*s, g);
+    }
+    fputc('\'', g);
+}
+
+int acc_path_ok(const char *path)
+{
+    size_t n = strlen(path);
+    if (n == 0 || n >= ACC_PATH_MAX)
+        return 0;
+    for (; *path; path++)
+        if ((unsigned char)*path < 0x20 || *path == 0x7f)
+            return 0;
+    return 1;
+}
+
 /* One gnuplot run for one terminal, the data inline, so nothing but the chart is written. The
  * key sits below the plot: inside it, it covered the cheapest variants' points. */
 static int plot(const char *term, const char *out, const acc_row *rows, int n)
@@ -85,16 +110,16 @@ static int plot(const char *term, const char *out, const acc_row *rows, int n)
     for (int i = 0; i < n; i++) /* error axis is logarithmic: truth (0) sits at its floor */
         fprintf(g, "\"%s\" %.4f %.6f %.4f\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
                 rows[i].ms_y);
-    fprintf(g, "EOD\nset terminal %s size 800,560 background rgb '#ffffff'\nset output '%s'\n"
-               "set title 'What accuracy costs: time per frame against error (vs truth)'\n"
+    fprintf(g, "EOD\nset terminal %s size 800,560 background rgb '#ffffff'\nset output ", term);
+    put_gnuplot_string(g, out);
+    fprintf(g, "\nset title 'What accuracy costs: time per frame against error (vs truth)'\n"
                "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
                "set ylabel 'pixels differing from truth (%%, log; truth itself plotted at 0.001)'\n"
                "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key below horizontal\n"
                "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
                "plot $d using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'fastest kernel for the mode', "
                "$d using 2:3:1 with labels offset 1,0.8 left notitle, "
-               "$d using 4:3 with points pt 5 ps 1.0 lc rgb '#d62728' title 'ybuffer (same scalar kernel for all)'\n",
-            term, out);
+               "$d using 4:3 with points pt 5 ps 1.0 lc rgb '#d62728' title 'ybuffer (same scalar kernel for all)'\n");
     return pclose(g) == 0 ? 0 : -1;
 }
 
@@ -106,7 +131,7 @@ static int write_chart(const char *svg, const acc_row *rows, int n, char *err, s
         return -1;
     }
     size_t len = strlen(svg);
-    char png[600];
+    char png[ACC_PATH_MAX + 8];
     if (len < 4 || strcmp(svg + len - 4, ".svg") || len >= sizeof png)
         return 0;
     snprintf(png, sizeof png, "%.*s.png", (int)(len - 4), svg);
@@ -120,7 +145,7 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
 {
     if (write_chart(svg, rows, n, err, errlen))
         return -1;
-    char tmp[600];
+    char tmp[ACC_PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", md);
     FILE *f = fopen(tmp, "w");
     if (!f) {

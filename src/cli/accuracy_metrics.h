@@ -35,6 +35,12 @@ void acc_pose(uint64_t *rng, int S, const uint8_t *height, player_t *p);
 void acc_compare(acc_stats *s, const uint32_t *truth, const uint32_t *img, int W, int H, uint32_t sky);
 void acc_summary(const acc_stats *s, acc_row *row);
 /* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot). */
+/* Longest report or chart path accepted, so derived names (.tmp, .png) always fit. */
+#define ACC_PATH_MAX 4000
+/* 1 when path may name a report or chart: not empty, shorter than ACC_PATH_MAX, and free of
+ * control characters (gnuplot reads it inside its script). */
+int acc_path_ok(const char *path);
+
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
                      uint64_t seed, char *err, size_t errlen);
 

@@ -119,11 +119,12 @@ int cmd_accuracy(int argc, char **argv)
         } else if (!strcmp(a, "--seed")) {
             if (cli_u64(val, &seed))
                 return cli_error("accuracy", "bad seed '%s'", val);
-        } else if (!strcmp(a, "-o"))
-            out_md = val;
-        else if (!strcmp(a, "--chart"))
-            out_svg = val;
-        else if (!strcmp(a, "--maps"))
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--chart")) {
+            if (!acc_path_ok(val))
+                return cli_error("accuracy", "bad output path for %s: empty, over %d bytes, or with a "
+                                 "control character", a, ACC_PATH_MAX - 1);
+            *(!strcmp(a, "-o") ? &out_md : &out_svg) = val;
+        } else if (!strcmp(a, "--maps"))
             maps_given = val;
         else
             return cli_error("accuracy", "unknown option '%s' (retro accuracy --help)", a);
