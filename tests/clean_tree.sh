@@ -27,12 +27,13 @@ git init -q . && git add -A && git -c user.name=t -c user.email=t@t commit -qm c
   echo "FAIL: could not make the copy a git repository"; exit 1; }
 # The binaries and libraries are taken as built, through copies, so nothing this test runs can
 # touch the real ones: with no objects to depend on, make (and its sub-makes, which inherit
-# these) rebuilds nothing.
+# these) rebuilds nothing. BUILD is named because make asan's BUILD would reach these makes
+# through the environment and send their output elsewhere.
 mkdir "$tmp/bin"
 cp -p "$retro" "$bench" "$(dirname "$(dirname "$retro")")/libretro.a" \
   "$(dirname "$(dirname "$retro")")/libretro-course.a" "$tmp/bin/" || { echo "FAIL: cannot copy the binaries"; exit 1; }
 retro=$tmp/bin/retro bench=$tmp/bin/retro-bench
-mk() { make --no-print-directory RETRO="$retro" BENCH_BIN="$bench" LIB="$tmp/bin/libretro.a" \
+mk() { make --no-print-directory BUILD=build RETRO="$retro" BENCH_BIN="$bench" LIB="$tmp/bin/libretro.a" \
   COURSE_LIB="$tmp/bin/libretro-course.a" LIB_OBJ= COURSE_SRC= \
   CLI_OBJ= BENCH_OBJ= SHARED="$shared" "$@" >"$tmp/log.$1" 2>&1 || { tail -n 15 "$tmp/log.$1"; return 1; }; }
 fail=0

@@ -41,7 +41,7 @@ xvfb_start 480 360 || { echo "FAIL: Xvfb does not start"; exit 1; }
 # checked here (ASan's memory errors and UBSan are): SDL's D-Bus connection leaks blocks from a
 # library SDL unloads at exit, which no suppression can then name. The headless replays of
 # tests/view.sh are the leak check, without suppressions.
-SDL_VIDEODRIVER=x11 SDL_RENDER_DRIVER=software ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}" \
+SDL_VIDEODRIVER=x11 SDL_RENDER_DRIVER=software ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
   timeout 90 "$retro" view "$tmp/v.scene" -k ybuffer >"$tmp/out" 2>&1 &
 vpid=$!
 wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^retro view' 2>/dev/null | head -n 1)
