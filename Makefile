@@ -90,6 +90,12 @@ $(BUILD)/src/kernel_simd_avx2.o $(BUILD)/count/kernel_simd_avx2.o $(BUILD)/pic/s
 $(BUILD)/src/kernel_simd_avx512.o $(BUILD)/count/kernel_simd_avx512.o $(BUILD)/pic/src/kernel_simd_avx512.o: \
   CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
 
+# The mesh module's SIMD files by name: *_avx2.c, *_avx512.c; its threads in mesh_omp.c.
+$(BUILD)/src/mesh/%_avx2.o $(BUILD)/pic/src/mesh/%_avx2.o: CFLAGS_ISA := -mavx2
+$(BUILD)/src/mesh/%_avx512.o $(BUILD)/pic/src/mesh/%_avx512.o: \
+  CFLAGS_ISA := -mavx2 -mavx512f -mavx512bw -mavx512vl -mavx512dq
+$(BUILD)/src/mesh/mesh_omp.o $(BUILD)/pic/src/mesh/mesh_omp.o: CFLAGS_FILE := -fopenmp
+
 $(BUILD)/src/cli/main.o: CFLAGS_FILE := -DRETRO_VERSION='"$(VERSION)"'
 
 $(BUILD)/%.o: %.c

@@ -57,7 +57,21 @@ typedef struct mesh_frame {
     double alpha0, alpha_per_unit;
     const uint16_t *fogtab;   /* mode int: fog weight at integer depth 0..far */
     int Ie, Je;               /* the square holding the eye (painter order) */
+    /* The fast kernels (mesh_fast.h) draw the z-buffer's image: kernel is then ZBUFFER and
+     * fast names the ISA of the block stage (MESH_FAST_*). */
+    int fast;
+    /* Rows this frame writes: rows r with ((r - 1) / MESH_BAND) mod nband == band (mesh-omp's
+     * interleaved bands; nband 1 writes every row). */
+    int band, nband;
 } mesh_frame;
+
+enum { MESH_FAST_NONE = 0, MESH_FAST_AVX2 = 1, MESH_FAST_AVX512 = 2 };
+#define MESH_BAND 8
+
+static inline int mesh_row_mine(const struct mesh_frame *f, int r)
+{
+    return f->nband == 1 || ((r - 1) / MESH_BAND) % f->nband == f->band;
+}
 
 /* A triangle handed from assembly to clipping. */
 typedef struct {
@@ -99,6 +113,7 @@ struct retro_mesh_ctx {
     uint16_t *fogtab;
     size_t fogtab_cap;
     uint32_t *out;
+    struct mesh_omp *omp; /* mesh-omp's threads and their contexts (mesh_omp.c), or NULL */
     retro_mesh_stats st;
     int oom;              /* a water buffer could not grow */
     char err[160];
@@ -129,5 +144,14 @@ void mesh_raster_int(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int
 void mesh_traverse(retro_mesh_ctx *mc);
 void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t);
 void mesh_water_draw(retro_mesh_ctx *mc);
+/* The fast kernels' block stage: squares [Ia, Ib] x [Ja, Jb] of a block not culled, in the
+ * z-buffer's order (traversal.c's block()). */
+void mesh_fast_block_avx2(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy);
+void mesh_fast_block_avx512(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy);
+/* The opaque and water passes of one frame set up in mc (mesh_render.c); mesh-omp runs it on
+ * each thread's context. */
+void mesh_frame_passes(retro_mesh_ctx *mc);
+retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads);
+void mesh_omp_free(struct mesh_omp *o);
 
 #endif

@@ -34,6 +34,14 @@ static void block(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, in
     const mesh_frame *f = &mc->f;
     if (block_outside(f, Ia + 0.5, Ib + 1.5, Ja + 0.5, Jb + 1.5))
         return;
+    if (f->fast == MESH_FAST_AVX512) {
+        mesh_fast_block_avx512(mc, Ia, Ib, Ja, Jb, sx, sy);
+        return;
+    }
+    if (f->fast == MESH_FAST_AVX2) {
+        mesh_fast_block_avx2(mc, Ia, Ib, Ja, Jb, sx, sy);
+        return;
+    }
     int ni = Ib - Ia + 1, nj = Jb - Ja + 1, stride = ni + 1;
     for (int j = 0; j <= nj; j++)
         for (int i = 0; i <= ni; i++) {
