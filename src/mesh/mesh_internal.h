@@ -10,6 +10,23 @@
 
 #include "retro_mesh.h"
 
+/* The stages keep short names in the source; the linker sees them under the library's prefix
+ * (as zlib's Z_PREFIX does), so no name of libretro clashes with a program's own. */
+#define mesh_clip_and_draw retro_mesh_clip_and_draw
+#define mesh_frame_setup retro_mesh_frame_setup
+#define mesh_plane_distances retro_mesh_plane_distances
+#define mesh_primitive_assembly retro_mesh_primitive_assembly
+#define mesh_project retro_mesh_project
+#define mesh_raster_f32 retro_mesh_raster_f32
+#define mesh_raster_f64 retro_mesh_raster_f64
+#define mesh_raster_int retro_mesh_raster_int
+#define mesh_scan_convert retro_mesh_scan_convert
+#define mesh_traverse retro_mesh_traverse
+#define mesh_vertex_stage retro_mesh_vertex_stage
+#define mesh_water_add retro_mesh_water_add
+#define mesh_water_draw retro_mesh_water_draw
+#pragma GCC visibility push(hidden)
+
 #define MESH_SUB RETRO_MESH_SUBPIXEL_BITS
 #define MESH_ONE ((int64_t)1 << MESH_SUB) /* one pixel in fixed point */
 #define MESH_BLOCK 16                     /* squares per block side (frustum culling) */
@@ -153,5 +170,7 @@ void mesh_fast_block_avx512(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, 
 void mesh_frame_passes(retro_mesh_ctx *mc);
 retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads);
 void mesh_omp_free(struct mesh_omp *o);
+
+#pragma GCC visibility pop
 
 #endif
