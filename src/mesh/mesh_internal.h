@@ -25,6 +25,11 @@
 #define mesh_vertex_stage retro_mesh_vertex_stage
 #define mesh_water_add retro_mesh_water_add
 #define mesh_water_draw retro_mesh_water_draw
+#define mesh_fast_block_avx2 retro_mesh_fast_block_avx2
+#define mesh_fast_block_avx512 retro_mesh_fast_block_avx512
+#define mesh_frame_passes retro_mesh_frame_passes
+#define mesh_omp_render retro_mesh_omp_render
+#define mesh_omp_free retro_mesh_omp_free
 #pragma GCC visibility push(hidden)
 
 #define MESH_SUB RETRO_MESH_SUBPIXEL_BITS
