@@ -2,7 +2,8 @@
  * input. The input picks the pose (any finite x and y, huge ones included, any int angle and
  * height), the screen (1..64 square), the distance, the mode, the ISA level, the thread count
  * of threaded kernels and a small map (S = 1..33), so the fuzzer steers every choice a kernel
- * branches on. A mismatch, an error return or a pixel left unwritten aborts with the case.
+ * branches on. The same pose and map also go through the mesh family: its fast kernels against
+ * mesh-zbuffer (distance reduced mod 97: a mesh frame costs D^2 triangles). A mismatch, an error return or a pixel left unwritten aborts with the case.
  *
  * Layout (missing bytes read as 0): flags, x[4], y[4], angle[4], height[4], W, H, D[2], S,
  * sky[3], then the cells (height, R, G, B each); cells the input does not cover come from a
@@ -14,6 +15,7 @@
 #include <string.h>
 
 #include "retro.h"
+#include "retro_mesh.h"
 
 #define MAX_S 33
 #define MAX_WH 64
@@ -76,6 +78,48 @@ static void describe(const player_t *p, const ctx_t *c, retro_mode mode, const c
     fprintf(stderr, "case: mode %s, isa %s, %d threads, x=%a y=%a angle=%d height=%d, %dx%d, D=%d, S=%d\n",
             retro_mode_name(mode), level, t, (double)p->x, (double)p->y, p->angle, p->height,
             c->scr_width, c->scr_height, c->distance, c->map_size);
+}
+
+static retro_mesh_ctx *mesh_ctxs[RETRO_MESH_KERNEL_COUNT];
+/* A mesh frame costs about D^2 triangles: its distance is bounded apart from the voxel one. */
+#define MESH_MAX_D 96
+
+/* The mesh family's fast kernels against mesh-zbuffer (binary32), byte for byte, on the same
+ * pose and map; culling off when the mode number is odd. */
+static void mesh_frames(const player_t *p, ctx_t *c, int mode, const char *level, int threads)
+{
+    for (int k = 0; k < RETRO_MESH_KERNEL_COUNT; k++)
+        if (!mesh_ctxs[k] && !(mesh_ctxs[k] = retro_mesh_ctx_new()))
+            abort();
+    size_t n = (size_t)c->scr_width * (size_t)c->scr_height;
+    int D = c->distance;
+    c->distance = D < 0 ? D : D % (MESH_MAX_D + 1);
+    retro_mesh_opts o = {(mode & 1) ? (unsigned)RETRO_MESH_FX_NOCULL : 0u, threads};
+    c->out = ref;
+    retro_mesh_err e = retro_mesh_render(mesh_ctxs[0], RETRO_MESH_ZBUFFER, RETRO_MESH_BINARY32, p, c, NULL, &o, NULL);
+    if (e) {
+        describe(p, c, (retro_mode)mode, level, 0);
+        fprintf(stderr, "mesh-zbuffer failed on a valid input: %s\n", retro_mesh_error(mesh_ctxs[0]));
+        abort();
+    }
+    c->out = out;
+    for (int k = RETRO_MESH_AVX2; k < RETRO_MESH_KERNEL_COUNT; k++) {
+        if (retro_mesh_kernel_isa((retro_mesh_kernel)k) & ~retro_cpu_features())
+            continue;
+        for (size_t i = 0; i < n; i++)
+            out[i] = POISON;
+        e = retro_mesh_render(mesh_ctxs[k], (retro_mesh_kernel)k, RETRO_MESH_BINARY32, p, c, NULL, &o, NULL);
+        size_t at = 0;
+        while (!e && at < n && out[at] == ref[at])
+            at++;
+        if (e || at < n) {
+            describe(p, c, (retro_mode)mode, level, threads);
+            fprintf(stderr, "mesh-%s %s at pixel %zu\n", retro_mesh_kernel_name((retro_mesh_kernel)k),
+                    e ? retro_mesh_error(mesh_ctxs[k]) : "differs from mesh-zbuffer", at);
+            abort();
+        }
+    }
+    c->distance = D;
 }
 
 /* OpenMP workers of the omp kernel would otherwise spin for 200 ms (libomp) after every
@@ -180,6 +224,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         }
     }
+    mesh_frames(&p, &c, (int)mode, level, threads);
     retro_cpu_limit(NULL);
     return 0;
 }
