@@ -57,8 +57,11 @@ static void same_as_zbuffer(retro_mesh_ctx *mc, retro_mesh_kernel k, int threads
     for (size_t i = 0; i < n; i++)
         cr_assert_eq(out[i], ref[i], "%s: mesh-%s (%d threads) fx %x mesh fx %x: pixel %zu is %08x, not %08x", what,
                      retro_mesh_kernel_name(k), threads, fx ? fx->flags : 0u, mfx, i, out[i], ref[i]);
-    cr_assert(!memcmp(&st, rst, sizeof st), "%s: mesh-%s stats differ (fragments %llu vs %llu, rasterized %llu vs %llu)",
-              what, retro_mesh_kernel_name(k), (unsigned long long)st.fragments, (unsigned long long)rst->fragments,
+    /* mesh-omp's geometry counts add up over its bands (a block two bands share counts twice) */
+    cr_assert(st.fragments == rst->fragments && st.written == rst->written &&
+                  (k == RETRO_MESH_OMP || !memcmp(&st, rst, sizeof st)),
+              "%s: mesh-%s stats differ (fragments %llu vs %llu, rasterized %llu vs %llu)", what,
+              retro_mesh_kernel_name(k), (unsigned long long)st.fragments, (unsigned long long)rst->fragments,
               (unsigned long long)st.rasterized, (unsigned long long)rst->rasterized);
     c->out = keep;
     free(out);
@@ -85,7 +88,8 @@ static void all_fast(const player_t *p, ctx_t *c, const retro_effects *fx, unsig
             continue;
         int nt = k == RETRO_MESH_OMP ? 3 : 1;
         for (int t = 0; t < nt; t++) /* one context through every kernel and thread count */
-            same_as_zbuffer(mc, (retro_mesh_kernel)k, thread_counts[t], p, c, fx, mfx, ref, &rst, what);
+            for (int again = 0; again < (k == RETRO_MESH_OMP ? 2 : 1); again++) /* bands rebalanced */
+                same_as_zbuffer(mc, (retro_mesh_kernel)k, thread_counts[t], p, c, fx, mfx, ref, &rst, what);
     }
     retro_mesh_ctx_free(mc);
     free(ref);

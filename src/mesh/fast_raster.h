@@ -1,7 +1,7 @@
 /* The fast kernels' raster of one triangle that lies inside every frustum plane, mode binary32,
  * colour nearest (with fog and wireframe): the loop of raster_tmpl.h with only the attributes
  * this colour source reads (sx, sy), the vertex reciprocals 1/z from the vertex stage's lanes,
- * and the setup deferred until the bounding box is known to hold a pixel centre of this band.
+ * and the setup deferred until the bounding box is known to hold a pixel centre of its rows.
  * Every operation is raster_tmpl.h's, in its order, so the bytes are mesh-zbuffer's. */
 #ifndef RETRO_MESH_FAST_RASTER_H
 #define RETRO_MESH_FAST_RASTER_H
@@ -22,17 +22,6 @@ static inline int fast_fog(const mesh_frame *f, float z)
         fw = z >= (float)f->fog_start ? 1.0f : 0.0f;
     fw = fw < 0 ? 0 : fw > 1 ? 1 : fw;
     return (int)(fw * 256.0f + 0.5f);
-}
-
-/* Some row of r0..r1 belongs to this frame's band. */
-static inline int fast_rows_mine(const mesh_frame *f, int r0, int r1)
-{
-    if (f->nband == 1 || r1 - r0 + 1 >= MESH_BAND * f->nband)
-        return 1;
-    for (int r = r0; r <= r1; r++)
-        if (mesh_row_mine(f, r))
-            return 1;
-    return 0;
 }
 
 /* X, Y fixed point, q = 1/z, (sx, sy) the vertices' positions in square (I, J) (reduced mod S). */
@@ -76,9 +65,9 @@ static void fast_raster_nearest(retro_mesh_ctx *mc, const int32_t X3[3], const i
     int64_t c0 = (xmin + 255) >> 8, c1 = xmax >> 8, r0 = (ymin + 255) >> 8, r1 = ymax >> 8;
     c0 = c0 < 0 ? 0 : c0;
     c1 = c1 > f->W - 1 ? f->W - 1 : c1;
-    r0 = r0 < 1 ? 1 : r0;
-    r1 = r1 > f->H ? f->H : r1;
-    if (c0 > c1 || r0 > r1 || !fast_rows_mine(f, (int)r0, (int)r1))
+    r0 = r0 < f->rlo ? f->rlo : r0; /* this frame's rows: 1..H, or mesh-omp's band */
+    r1 = r1 > f->rhi ? f->rhi : r1;
+    if (c0 > c1 || r0 > r1)
         return;
     const int W = f->W, H = f->H, S = f->S, fog = (f->fx & RETRO_FX_FOG) != 0;
     const int64_t wire_on = (f->mfx & RETRO_MESH_FX_WIREFRAME) != 0;
@@ -102,8 +91,7 @@ static void fast_raster_nearest(retro_mesh_ctx *mc, const int32_t X3[3], const i
     for (int r = (int)r0; r <= (int)r1; r++) {
         int64_t e0 = er[0], e1 = er[1], e2 = er[2];
         size_t row = (size_t)(H - r) * (size_t)W;
-        const int c_end = mesh_row_mine(f, r) ? (int)c1 : (int)c0 - 1;
-        for (int c = (int)c0; c <= c_end; c++, e0 += stepx[0], e1 += stepx[1], e2 += stepx[2]) {
+        for (int c = (int)c0; c <= (int)c1; c++, e0 += stepx[0], e1 += stepx[1], e2 += stepx[2]) {
             if (e0 < thr[0] || e1 < thr[1] || e2 < thr[2])
                 continue;
             if (wire_on && !(e0 < lim[0] || e1 < lim[1] || e2 < lim[2]))

@@ -112,14 +112,14 @@ static inline vf fast_orient(vf l0, vf e0, vf z0, vf l1, vf e1, vf z1, vf l2, vf
     return vf_add(vf_add(vf_mul(l0, nl), vf_mul(e0, ne)), vf_mul(z0, nz));
 }
 
-/* Lanes whose snapped bounding box holds a pixel centre of the screen. */
+/* Lanes whose snapped bounding box holds a pixel centre of the screen in this frame's rows. */
 static inline unsigned fast_bbox(const mesh_frame *f, vi x0, vi y0, vi x1, vi y1, vi x2, vi y2)
 {
     vi xmin = vi_min(vi_min(x0, x1), x2), xmax = vi_max(vi_max(x0, x1), x2);
     vi ymin = vi_min(vi_min(y0, y1), y2), ymax = vi_max(vi_max(y0, y1), y2);
     vi k255 = vi_set1(255);
     vi c0 = vi_max(vi_sra8(vi_add(xmin, k255)), vi_set1(0)), c1 = vi_min(vi_sra8(xmax), vi_set1(f->W - 1));
-    vi r0 = vi_max(vi_sra8(vi_add(ymin, k255)), vi_set1(1)), r1 = vi_min(vi_sra8(ymax), vi_set1(f->H));
+    vi r0 = vi_max(vi_sra8(vi_add(ymin, k255)), vi_set1(f->rlo)), r1 = vi_min(vi_sra8(ymax), vi_set1(f->rhi));
     return ~(vi_gt(c0, c1) | vi_gt(r0, r1));
 }
 

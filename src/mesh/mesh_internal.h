@@ -82,19 +82,17 @@ typedef struct mesh_frame {
     /* The fast kernels (mesh_fast.h) draw the z-buffer's image: kernel is then ZBUFFER and
      * fast names the ISA of the block stage (MESH_FAST_*). */
     int fast;
-    /* Rows this frame writes: rows r with ((r - 1) / MESH_BAND) mod nband == band (mesh-omp's
-     * interleaved bands; nband 1 writes every row). */
-    int band, nband;
+    /* Rows this frame writes, rlo..rhi (mesh-omp's bands; 1..H otherwise), and the band's
+     * bottom and top planes for block culling (cb, ct for the whole screen). */
+    int rlo, rhi;
+    double bcb, bct;
 } mesh_frame;
 
 enum { MESH_FAST_NONE = 0, MESH_FAST_AVX2 = 1, MESH_FAST_AVX512 = 2 };
-#define MESH_BAND 8
-
 static inline int mesh_row_mine(const struct mesh_frame *f, int r)
 {
-    return f->nband == 1 || ((r - 1) / MESH_BAND) % f->nband == f->band;
+    return r >= f->rlo && r <= f->rhi;
 }
-
 /* A triangle handed from assembly to clipping. */
 typedef struct {
     mesh_vert v[3];

@@ -1,10 +1,12 @@
-/* mesh-omp: the fast kernel on every thread, each writing only its rows. Rows are dealt in
- * interleaved bands of MESH_BAND (row r to thread ((r - 1) / MESH_BAND) mod T), so the terrain's
- * rows, crowded at the bottom of the screen, spread evenly. Every thread walks the whole
- * geometry in the z-buffer's order (vertex and triangle setup are repeated, the raster is
- * split), so each pixel sees exactly the serial kernel's sequence of fragments, water blends
- * included: the bytes do not depend on the thread count or the schedule. Threads are pinned
- * with hwloc one per core for the frame; the caller's binding is given back after it. */
+/* mesh-omp: the fast kernel on every thread, each drawing one band of rows. Bands are
+ * contiguous; a thread culls the blocks that lie outside its band (the band's bottom and top
+ * planes join the frustum's in block culling), so the geometry is shared out as well as the
+ * raster. Each pixel still sees exactly the serial kernel's sequence of fragments, water blends
+ * included (every thread sorts the same water list and blends only its rows), so the bytes do
+ * not depend on the thread count, the band boundaries or the schedule. The boundaries follow
+ * the previous frame's per-thread times (the terrain is not spread evenly over the rows); that
+ * changes only who draws a row, never what is drawn. Threads are pinned with hwloc one per
+ * core for the frame and get their former binding back after it. */
 #include <hwloc.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -17,6 +19,9 @@
 struct mesh_omp {
     retro_mesh_ctx *sub[MESH_MAX_THREADS]; /* per-thread contexts: scratch, water list, stats */
     hwloc_bitmap_t saved[MESH_MAX_THREADS]; /* each thread's binding before the frame */
+    int cut[MESH_MAX_THREADS + 1];         /* band t: rows cut[t] + 1 .. cut[t + 1] */
+    double secs[MESH_MAX_THREADS];         /* each band's time in the previous frame */
+    int last_T, last_H;
     hwloc_topology_t topo;
     int have_topo, cores;
 };
@@ -72,6 +77,42 @@ static int bind_core(struct mesh_omp *o, int t, hwloc_bitmap_t saved)
     return core && hwloc_set_cpubind(o->topo, core->cpuset, HWLOC_CPUBIND_THREAD) == 0;
 }
 
+/* Band boundaries for T threads over H rows: equal on the first frame (or a new size), then
+ * cut where the previous frame's cost, taken as uniform inside each band, splits evenly. */
+static void plan_bands(struct mesh_omp *o, int T, int H)
+{
+    if (T != o->last_T || H != o->last_H) {
+        for (int t = 0; t <= T; t++)
+            o->cut[t] = (int)((int64_t)H * t / T);
+        o->last_T = T;
+        o->last_H = H;
+        return;
+    }
+    double total = 0;
+    for (int t = 0; t < T; t++)
+        total += o->secs[t];
+    if (!(total > 0))
+        return;
+    int cut[MESH_MAX_THREADS + 1];
+    cut[0] = 0;
+    cut[T] = H;
+    double acc = 0;
+    int b = 0;
+    for (int t = 1; t < T; t++) {
+        double goal = total * t / T;
+        /* walk bands until the goal falls inside band b, then interpolate a row in it */
+        while (b < T - 1 && acc + o->secs[b] < goal)
+            acc += o->secs[b++];
+        int lo = o->cut[b], hi = o->cut[b + 1];
+        double frac = o->secs[b] > 0 ? (goal - acc) / o->secs[b] : 0.5;
+        int r = lo + (int)(frac * (hi - lo) + 0.5);
+        int minr = cut[t - 1] + (H >= T ? 1 : 0), maxr = H - (H >= T ? T - t : 0);
+        cut[t] = r < minr ? minr : r > maxr ? maxr : r;
+    }
+    for (int t = 0; t <= T; t++)
+        o->cut[t] = cut[t];
+}
+
 retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
 {
     int T = threads > 0 ? threads : omp_get_max_threads();
@@ -81,11 +122,15 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
         strcpy(mc->err, "out of memory");
         return RETRO_MESH_ENOMEM;
     }
+    plan_bands(o, T, mc->f.H);
     for (int t = 0; t < T; t++) {
         retro_mesh_ctx *s = o->sub[t];
         s->f = mc->f;
-        s->f.band = t;
-        s->f.nband = T;
+        s->f.rlo = o->cut[t] + 1;
+        s->f.rhi = o->cut[t + 1];
+        /* the band's planes: V >= rlo - 0.5 and V <= rhi + 0.5 */
+        s->f.bcb = mc->f.cy - (double)s->f.rlo + 0.5;
+        s->f.bct = (double)s->f.rhi + 0.5 - mc->f.cy;
         s->depth = mc->depth;
         s->out = mc->out;
         memset(&s->st, 0, sizeof s->st);
@@ -96,16 +141,23 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
     {
         int t = omp_get_thread_num();
         int bound = bind_core(o, t, o->saved[t]);
-        mesh_frame_passes(o->sub[t]);
+        double t0 = omp_get_wtime();
+        if (o->sub[t]->f.rlo <= o->sub[t]->f.rhi)
+            mesh_frame_passes(o->sub[t]);
+        o->secs[t] = omp_get_wtime() - t0;
         if (bound)
             hwloc_set_cpubind(o->topo, o->saved[t], HWLOC_CPUBIND_THREAD);
     }
-    /* Geometry is walked by every thread alike: its counts are thread 0's. */
-    mc->st = o->sub[0]->st;
-    mc->st.fragments = mc->st.written = 0;
+    /* Counts add up over the bands: geometry a band culls or shares is counted per band. */
+    memset(&mc->st, 0, sizeof mc->st);
     for (int t = 0; t < T; t++) {
-        mc->st.fragments += o->sub[t]->st.fragments;
-        mc->st.written += o->sub[t]->st.written;
+        const retro_mesh_stats *b = &o->sub[t]->st;
+        mc->st.submitted += b->submitted;
+        mc->st.culled += b->culled;
+        mc->st.clipped_out += b->clipped_out;
+        mc->st.rasterized += b->rasterized;
+        mc->st.fragments += b->fragments;
+        mc->st.written += b->written;
         mc->oom |= o->sub[t]->oom;
     }
     return RETRO_MESH_OK;

@@ -181,8 +181,6 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
               : k == RETRO_MESH_AVX512 ? MESH_FAST_AVX512
               : k == RETRO_MESH_OMP    ? ((retro_cpu_features() & RETRO_CPU_AVX512) ? MESH_FAST_AVX512 : MESH_FAST_AVX2)
                                        : MESH_FAST_NONE;
-    f->band = 0;
-    f->nband = 1;
     f->mode = mode;
     f->f32 = mode == RETRO_MESH_BINARY32;
     f->W = W;
@@ -215,6 +213,10 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
     f->cr = W - 0.5 - f->cx;
     f->cb = f->cy - 0.5;
     f->ct = H + 0.5 - f->cy;
+    f->rlo = 1;
+    f->rhi = H;
+    f->bcb = f->cb;
+    f->bct = f->ct;
     f->hmin = 255;
     f->hmax = 0;
     minmax(f->h0, (size_t)S * (size_t)S, &f->hmin, &f->hmax);
