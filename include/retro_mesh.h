@@ -34,6 +34,11 @@ typedef enum {
 typedef enum {
     RETRO_MESH_ZBUFFER = 0, /* reference: depth buffer, front to back in grid order */
     RETRO_MESH_PAINTER = 1, /* no depth buffer: back to front in grid order */
+    /* The z-buffer's image, fast (docs/MESH_FAST.md): vertex stage and triangle setup in SIMD
+     * lanes, binary32 only. */
+    RETRO_MESH_AVX2 = 2,
+    RETRO_MESH_AVX512 = 3,
+    RETRO_MESH_OMP = 4, /* mesh-avx512 or mesh-avx2 on interleaved row bands, one per thread */
     RETRO_MESH_KERNEL_COUNT
 } retro_mesh_kernel;
 
@@ -49,6 +54,7 @@ enum {
 
 typedef struct retro_mesh_opts {
     unsigned flags; /* RETRO_MESH_FX_* */
+    int threads;    /* mesh-omp: threads (0: OMP_NUM_THREADS or the core count), 1..64 */
 } retro_mesh_opts;
 
 typedef struct retro_mesh_stats {
@@ -86,6 +92,12 @@ const char *retro_mesh_kernel_name(retro_mesh_kernel kernel);
 /* The scene effects (RETRO_FX_*) and mesh effects (RETRO_MESH_FX_*) kernel renders in mode. */
 unsigned retro_mesh_supported_fx(retro_mesh_kernel kernel, retro_mesh_mode mode);
 unsigned retro_mesh_supported_mesh_fx(retro_mesh_kernel kernel, retro_mesh_mode mode);
+/* Non-zero when kernel renders mode (the SIMD kernels render binary32 only). */
+int retro_mesh_supports_mode(retro_mesh_kernel kernel, retro_mesh_mode mode);
+/* The CPU features (RETRO_CPU_* of retro.h) kernel needs; retro_mesh_render refuses it, naming
+ * the ISA, when retro_cpu_features() lacks one. mesh-omp needs AVX2 and uses AVX-512 when the
+ * CPU level allows it. */
+unsigned retro_mesh_kernel_isa(retro_mesh_kernel kernel);
 
 #ifdef __cplusplus
 }

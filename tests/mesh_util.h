@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "retro.h"
 #include "retro_mesh.h"
 
 #define MSKY 0x66a3ff00u
@@ -52,10 +53,16 @@ static inline retro_mesh_err mrender(retro_mesh_kernel k, retro_mesh_mode mode, 
 {
     retro_mesh_ctx *mc = retro_mesh_ctx_new();
     cr_assert(mc);
-    retro_mesh_opts o = {mfx};
+    retro_mesh_opts o = {mfx, 0};
     retro_mesh_err e = retro_mesh_render(mc, k, mode, p, c, fx, &o, st);
     retro_mesh_ctx_free(mc);
     return e;
+}
+
+/* The kernel renders the mode on this CPU (the fast kernels: binary32, their ISA present). */
+static inline int mkernel_runs(retro_mesh_kernel k, retro_mesh_mode mode)
+{
+    return retro_mesh_supports_mode(k, mode) && !(retro_mesh_kernel_isa(k) & ~retro_cpu_features());
 }
 
 static inline void mrender_ok(retro_mesh_kernel k, retro_mesh_mode mode, const player_t *p, const ctx_t *c,

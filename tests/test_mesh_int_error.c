@@ -43,7 +43,7 @@ Test(mesh_int_error, interpolation_against_binary64)
     retro_mesh_ctx *mc = retro_mesh_ctx_new();
     ctx_t c = {W, H, 1, 2, MSKY, h1, c1, out};
     player_t p = {0.5f, 0.5f, 0, 10, 0, 0, 0};
-    retro_mesh_opts o = {RETRO_MESH_FX_GOURAUD};
+    retro_mesh_opts o = {RETRO_MESH_FX_GOURAUD, 0};
     cr_assert_eq(retro_mesh_render(mc, RETRO_MESH_ZBUFFER, RETRO_MESH_BINARY64, &p, &c, NULL, &o, NULL), 0);
     mc->f.far = RETRO_MESH_MAX_FAR + 1;
     const double rhos[] = {1, 1.5, 2.5, 16, 256, 4096};

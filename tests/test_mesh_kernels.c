@@ -245,7 +245,7 @@ Test(mesh_api, refusals)
         for (int k = 0; k < 16; k++)
             out[k] = 0x12345600u;
         fx.flags = cases[i].flags;
-        retro_mesh_opts o = {cases[i].mfx};
+        retro_mesh_opts o = {cases[i].mfx, 0};
         retro_mesh_err e = retro_mesh_render(mc, cases[i].k, RETRO_MESH_BINARY32, &cases[i].p, &cases[i].c, &fx, &o, NULL);
         cr_assert_eq(e, cases[i].want, "case %zu: %d (%s)", i, e, retro_mesh_error(mc));
         cr_assert(strstr(retro_mesh_error(mc), cases[i].word), "case %zu: message '%s' lacks '%s'", i,

@@ -16,7 +16,7 @@ static retro_mesh_ctx *stage_ctx(int W, int H, uint32_t *out, unsigned mfx)
     cr_assert(mc);
     ctx_t c = {W, H, 1, 2, 0, h1, c1, out};
     player_t p = {0.5f, 0.5f, 0, 10, 0, 0, 0};
-    retro_mesh_opts o = {mfx};
+    retro_mesh_opts o = {mfx, 0};
     cr_assert_eq(retro_mesh_render(mc, RETRO_MESH_PAINTER, RETRO_MESH_BINARY64, &p, &c, NULL, &o, NULL), 0);
     mc->f.far = 1000;
     return mc;

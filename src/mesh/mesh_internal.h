@@ -25,6 +25,11 @@
 #define mesh_vertex_stage retro_mesh_vertex_stage
 #define mesh_water_add retro_mesh_water_add
 #define mesh_water_draw retro_mesh_water_draw
+#define mesh_fast_block_avx2 retro_mesh_fast_block_avx2
+#define mesh_fast_block_avx512 retro_mesh_fast_block_avx512
+#define mesh_frame_passes retro_mesh_frame_passes
+#define mesh_omp_render retro_mesh_omp_render
+#define mesh_omp_free retro_mesh_omp_free
 #pragma GCC visibility push(hidden)
 
 #define MESH_SUB RETRO_MESH_SUBPIXEL_BITS
@@ -74,8 +79,20 @@ typedef struct mesh_frame {
     double alpha0, alpha_per_unit;
     const uint16_t *fogtab;   /* mode int: fog weight at integer depth 0..far */
     int Ie, Je;               /* the square holding the eye (painter order) */
+    /* The fast kernels (mesh_fast.h) draw the z-buffer's image: kernel is then ZBUFFER and
+     * fast names the ISA of the block stage (MESH_FAST_*). */
+    int fast;
+    /* Rows this frame writes, rlo..rhi (mesh-omp's bands; 1..H otherwise), and the band's
+     * bottom and top planes for block culling (cb, ct for the whole screen). */
+    int rlo, rhi;
+    double bcb, bct;
 } mesh_frame;
 
+enum { MESH_FAST_NONE = 0, MESH_FAST_AVX2 = 1, MESH_FAST_AVX512 = 2 };
+static inline int mesh_row_mine(const struct mesh_frame *f, int r)
+{
+    return r >= f->rlo && r <= f->rhi;
+}
 /* A triangle handed from assembly to clipping. */
 typedef struct {
     mesh_vert v[3];
@@ -116,6 +133,7 @@ struct retro_mesh_ctx {
     uint16_t *fogtab;
     size_t fogtab_cap;
     uint32_t *out;
+    struct mesh_omp *omp; /* mesh-omp's threads and their contexts (mesh_omp.c), or NULL */
     retro_mesh_stats st;
     int oom;              /* a water buffer could not grow */
     char err[160];
@@ -146,6 +164,15 @@ void mesh_raster_int(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int
 void mesh_traverse(retro_mesh_ctx *mc);
 void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t);
 void mesh_water_draw(retro_mesh_ctx *mc);
+/* The fast kernels' block stage: squares [Ia, Ib] x [Ja, Jb] of a block not culled, in the
+ * z-buffer's order (traversal.c's block()). */
+void mesh_fast_block_avx2(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy);
+void mesh_fast_block_avx512(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy);
+/* The opaque and water passes of one frame set up in mc (mesh_render.c); mesh-omp runs it on
+ * each thread's context. */
+void mesh_frame_passes(retro_mesh_ctx *mc);
+retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads);
+void mesh_omp_free(struct mesh_omp *o);
 
 #pragma GCC visibility pop
 

@@ -30,6 +30,7 @@ void retro_mesh_ctx_free(retro_mesh_ctx *mc)
     free(mc->water);
     free(mc->order);
     free(mc->fogtab);
+    mesh_omp_free(mc->omp);
     free(mc);
 }
 
@@ -46,7 +47,7 @@ const char *retro_mesh_mode_name(retro_mesh_mode mode)
 
 const char *retro_mesh_kernel_name(retro_mesh_kernel kernel)
 {
-    static const char *const names[] = {"zbuffer", "painter"};
+    static const char *const names[] = {"zbuffer", "painter", "avx2", "avx512", "omp"};
     return (unsigned)kernel < RETRO_MESH_KERNEL_COUNT ? names[kernel] : "?";
 }
 
@@ -165,6 +166,12 @@ void mesh_water_draw(retro_mesh_ctx *mc)
     }
 }
 
+void mesh_frame_passes(retro_mesh_ctx *mc)
+{
+    mesh_traverse(mc);
+    mesh_water_draw(mc);
+}
+
 retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, retro_mesh_mode mode,
                                  const player_t *p, const ctx_t *c, const retro_effects *fx,
                                  const retro_mesh_opts *opts, retro_mesh_stats *stats)
@@ -172,13 +179,19 @@ retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, r
     if (!mc)
         return RETRO_MESH_EINVAL;
     mc->err[0] = 0;
+    int threads = opts ? opts->threads : 0;
+    if (threads < 0 || threads > 64) {
+        strcpy(mc->err, "threads out of range (0..64)");
+        return RETRO_MESH_EINVAL;
+    }
     retro_mesh_err e = mesh_frame_setup(mc, kernel, mode, p, c, fx, opts ? opts->flags : 0);
     if (e)
         return e;
     const mesh_frame *f = &mc->f;
+    const int zb = f->kernel == RETRO_MESH_ZBUFFER;
     size_t npx = (size_t)f->W * (size_t)f->H;
     size_t bytes = npx * (mode == RETRO_MESH_BINARY64 ? sizeof(double) : sizeof(float));
-    if (kernel == RETRO_MESH_ZBUFFER && bytes > mc->depth_cap) {
+    if (zb && bytes > mc->depth_cap) {
         void *d = realloc(mc->depth, bytes);
         if (!d) {
             strcpy(mc->err, "out of memory");
@@ -193,7 +206,7 @@ retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, r
     mc->out = c->out;
     for (size_t i = 0; i < npx; i++)
         c->out[i] = f->sky;
-    if (kernel == RETRO_MESH_ZBUFFER) {
+    if (zb) {
         if (mode == RETRO_MESH_BINARY32)
             for (size_t i = 0; i < npx; i++)
                 ((float *)mc->depth)[i] = (float)INFINITY;
@@ -203,8 +216,13 @@ retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, r
         else
             memset(mc->depth, 0, npx * sizeof(uint32_t)); /* 1/z = 0: infinitely far */
     }
-    mesh_traverse(mc);
-    mesh_water_draw(mc);
+    if (kernel == RETRO_MESH_OMP) {
+        e = mesh_omp_render(mc, threads);
+        if (e)
+            return e;
+    } else {
+        mesh_frame_passes(mc);
+    }
     if (stats)
         *stats = mc->st;
     if (mc->oom) {

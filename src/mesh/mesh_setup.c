@@ -55,6 +55,28 @@ unsigned retro_mesh_supported_mesh_fx(retro_mesh_kernel kernel, retro_mesh_mode 
     return RETRO_MESH_FX_ALL;
 }
 
+int retro_mesh_supports_mode(retro_mesh_kernel kernel, retro_mesh_mode mode)
+{
+    if ((unsigned)kernel >= RETRO_MESH_KERNEL_COUNT || (unsigned)mode >= RETRO_MESH_MODE_COUNT)
+        return 0;
+    return kernel <= RETRO_MESH_PAINTER || mode == RETRO_MESH_BINARY32;
+}
+
+unsigned retro_mesh_kernel_isa(retro_mesh_kernel kernel)
+{
+    switch (kernel) {
+    case RETRO_MESH_AVX2: return RETRO_CPU_AVX2;
+    case RETRO_MESH_AVX512: return RETRO_CPU_AVX512;
+    case RETRO_MESH_OMP: return RETRO_CPU_AVX2;
+    default: return 0;
+    }
+}
+
+static const char *isa_name(unsigned isa)
+{
+    return (isa & RETRO_CPU_AVX512) ? "AVX-512 (F, BW, VL, DQ)" : (isa & RETRO_CPU_AVX2) ? "AVX2" : "SSE2";
+}
+
 static const char *const fx_names[] = {"fog", "shade", "water", "bilinear", "lod", "horizon", "morph"};
 
 /* cos and sin of the angle as SEMANTICS.md step 1: multiples of 90 degrees exact. */
@@ -115,6 +137,17 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
         return fail(mc, RETRO_MESH_EINVAL, "missing player, context or map");
     if ((unsigned)k >= RETRO_MESH_KERNEL_COUNT || (unsigned)mode >= RETRO_MESH_MODE_COUNT)
         return fail(mc, RETRO_MESH_EINVAL, "unknown mesh kernel or mode");
+    if (!retro_mesh_supports_mode(k, mode)) {
+        snprintf(mc->err, sizeof mc->err, "kernel mesh-%s does not render mode %s",
+                 retro_mesh_kernel_name(k), retro_mesh_mode_name(mode));
+        return RETRO_MESH_EUNSUPPORTED;
+    }
+    unsigned need = retro_mesh_kernel_isa(k);
+    if (need & ~retro_cpu_features()) {
+        snprintf(mc->err, sizeof mc->err, "kernel mesh-%s needs %s, which this CPU (or RETRO_ISA) lacks",
+                 retro_mesh_kernel_name(k), isa_name(need & ~retro_cpu_features()));
+        return RETRO_MESH_EUNSUPPORTED;
+    }
     int W = c->scr_width, H = c->scr_height, S = c->map_size;
     if (W < 1 || H < 1 || W > RETRO_MAX_SCREEN || H > RETRO_MAX_SCREEN || (long)W * H > RETRO_MAX_PIXELS)
         return fail(mc, RETRO_MESH_EINVAL, "screen size out of range");
@@ -142,7 +175,12 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
 
     mesh_frame *f = &mc->f;
     memset(f, 0, sizeof *f);
-    f->kernel = k;
+    /* The fast kernels draw the z-buffer's image through its order and output stage. */
+    f->kernel = k == RETRO_MESH_PAINTER ? RETRO_MESH_PAINTER : RETRO_MESH_ZBUFFER;
+    f->fast = k == RETRO_MESH_AVX2     ? MESH_FAST_AVX2
+              : k == RETRO_MESH_AVX512 ? MESH_FAST_AVX512
+              : k == RETRO_MESH_OMP    ? ((retro_cpu_features() & RETRO_CPU_AVX512) ? MESH_FAST_AVX512 : MESH_FAST_AVX2)
+                                       : MESH_FAST_NONE;
     f->mode = mode;
     f->f32 = mode == RETRO_MESH_BINARY32;
     f->W = W;
@@ -175,6 +213,10 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
     f->cr = W - 0.5 - f->cx;
     f->cb = f->cy - 0.5;
     f->ct = H + 0.5 - f->cy;
+    f->rlo = 1;
+    f->rhi = H;
+    f->bcb = f->cb;
+    f->bct = f->ct;
     f->hmin = 255;
     f->hmax = 0;
     minmax(f->h0, (size_t)S * (size_t)S, &f->hmin, &f->hmax);

@@ -62,7 +62,8 @@ void mesh_raster_int(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int
     for (int r = r0; r <= r1; r++) {
         int64_t e0 = er[0], e1 = er[1], e2 = er[2];
         size_t row = (size_t)(H - r) * (size_t)W;
-        for (int c = c0; c <= c1; c++, e0 += stepx[0], e1 += stepx[1], e2 += stepx[2]) {
+        const int c_end = mesh_row_mine(f, r) ? c1 : c0 - 1; /* another band's row: skipped */
+        for (int c = c0; c <= c_end; c++, e0 += stepx[0], e1 += stepx[1], e2 += stepx[2]) {
             if (e0 < thr[0] || e1 < thr[1] || e2 < thr[2])
                 continue;
             if (wire_on && !(e0 < lim[0] || e1 < lim[1] || e2 < lim[2]))

@@ -10,17 +10,20 @@
  * covers the rounding of the vertex stage, so culling never removes a visible triangle). */
 static int block_outside(const mesh_frame *f, double x0, double x1, double y0, double y1)
 {
-    unsigned all = 63;
+    unsigned all = 255;
     for (int k = 0; k < 8 && all; k++) {
         double dx = ((k & 1) ? x1 : x0) - f->x0, dy = ((k & 2) ? y1 : y0) - f->y0;
         double e = ((k & 4) ? f->hmax : f->hmin) - (double)f->height;
         double z = dx * f->cs - dy * f->sn, l = dx * f->sn + dy * f->cs;
         double lx = f->kx * l, ey = f->ky * e;
-        double d[6] = {z - 1, f->far - z, lx + f->cl * z, f->cr * z - lx, ey + f->cb * z, f->ct * z - ey};
-        double m[6] = {fabs(z), fabs(z), fabs(lx) + fabs(f->cl * z), fabs(lx) + fabs(f->cr * z),
-                       fabs(ey) + fabs(f->cb * z), fabs(ey) + fabs(f->ct * z)};
+        /* the six frustum planes, then the bottom and top of this frame's row band */
+        double d[8] = {z - 1, f->far - z, lx + f->cl * z, f->cr * z - lx, ey + f->cb * z, f->ct * z - ey,
+                       ey + f->bcb * z, f->bct * z - ey};
+        double m[8] = {fabs(z), fabs(z), fabs(lx) + fabs(f->cl * z), fabs(lx) + fabs(f->cr * z),
+                       fabs(ey) + fabs(f->cb * z), fabs(ey) + fabs(f->ct * z),
+                       fabs(ey) + fabs(f->bcb * z), fabs(ey) + fabs(f->bct * z)};
         unsigned out = 0;
-        for (int p = 0; p < 6; p++)
+        for (int p = 0; p < 8; p++)
             out |= (d[p] < -(1e-5 * m[p] + 1e-3)) ? 1u << p : 0u;
         all &= out;
     }
@@ -34,6 +37,14 @@ static void block(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, in
     const mesh_frame *f = &mc->f;
     if (block_outside(f, Ia + 0.5, Ib + 1.5, Ja + 0.5, Jb + 1.5))
         return;
+    if (f->fast == MESH_FAST_AVX512) {
+        mesh_fast_block_avx512(mc, Ia, Ib, Ja, Jb, sx, sy);
+        return;
+    }
+    if (f->fast == MESH_FAST_AVX2) {
+        mesh_fast_block_avx2(mc, Ia, Ib, Ja, Jb, sx, sy);
+        return;
+    }
     int ni = Ib - Ia + 1, nj = Jb - Ja + 1, stride = ni + 1;
     for (int j = 0; j <= nj; j++)
         for (int i = 0; i <= ni; i++) {
