@@ -11,6 +11,20 @@
 #include "retro_internal.h"
 #include "retro_scene.h"
 
+/* Occlusion skipping (docs/SKIPPING.md, "The SIMD strips"): a group of lanes probes the
+ * pyramid with the smallest y-buffer of its columns (retro_skip_group). The submission has no
+ * pyramid (its frames never carry one), so there the probe is compiled out. */
+#ifndef RETRO_SUBMISSION
+#include "hmax_pyramid.h"
+typedef retro_skip_grp retro_simd_grp;
+#define RETRO_SIMD_GRP_INIT(g, f, ua, ub) retro_skip_grp_init((g), (f), (ua), (ub))
+#define RETRO_SIMD_PROBE(g, f, d, y, pow2) retro_skip_group((f)->pyr, (f), (g), (d), (f)->D, (y), (pow2))
+#else
+typedef int retro_simd_grp;
+#define RETRO_SIMD_GRP_INIT(g, f, ua, ub) ((void)(g), (void)(f), (void)(ua), (void)(ub))
+#define RETRO_SIMD_PROBE(g, f, d, y, pow2) ((void)(g), (void)(y), (d))
+#endif
+
 /* The packed map is tiled: 4x4 cells of 4 bytes fill one 64-byte line, so the 16 columns of a
  * vector, which sample along a line across the view, and the next distances, which move along
  * it, hit a few lines whatever the view angle (row-major rows put a vector looking along x on
@@ -87,6 +101,11 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
 #define RETRO_SIMD_COUNT(out, base, lanes) ((void)0)
 #endif
 
+/* The probe schedule of a group that skips, as the scalar strip's: after a probe that cannot
+ * skip, RETRO_SKIP_NEAR distances are evaluated before the next, doubling up to
+ * RETRO_SKIP_FAR while probes keep failing, back to RETRO_SKIP_NEAR after a skip. */
+enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
+
 /* The strip loops and the two entry points every SIMD file shares, expanded at the end of
  * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
  * are that file's own. The names it makes carry the ISA, so that the files concatenated into
@@ -97,8 +116,12 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
                      int u1)                                                                        \
     {                                                                                               \
-        for (int u = u0; u < u1; u += LANES)                                                       \
-            exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog);           \
+        if (f->pyr) /* skipping: only mode exact frames carry a pyramid */                         \
+            for (int u = u0; u < u1; u += LANES)                                                   \
+                exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog, 1);    \
+        else                                                                                        \
+            for (int u = u0; u < u1; u += LANES)                                                   \
+                exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog, 0);    \
     }
 #define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
     static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
