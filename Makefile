@@ -47,7 +47,7 @@ PEER_SRC := $(wildcard src/peer/*.c)
 LIB_SRC  := $(sort $(filter-out src/cli/% src/submission/% src/peer/% $(COURSE_SRC),\
               $(shell find src tools -name '*.c')))
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
-TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c $(PEER_SRC)
+TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c tests/skipping_rig.c $(PEER_SRC)
 # retro view's SDL-free parts, tested in tests/test_view_keys.c.
 TEST_CLI := $(addprefix src/cli/,view_keys.c view_font.c view_overlay.c view_render.c \
               scene_job.c scene_args.c cli_args.c)
