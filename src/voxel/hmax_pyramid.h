@@ -32,6 +32,9 @@ enum {
     RETRO_PYR_LMAX = 12,  /* blocks of 4096 cells */
     RETRO_SKIP_NEAR = 4,  /* distances evaluated one by one after a probe that cannot skip, */
     RETRO_SKIP_FAR = 32,  /* doubling up to this many while the probes keep failing */
+    /* retro_skip_group: failing windows per probe before it gives up. A vector step costs
+     * about one window read, so a group cannot afford the full descent. */
+    RETRO_SKIP_GROUP_TRIES = 64,
 };
 
 typedef struct retro_pyramid {
@@ -62,6 +65,12 @@ typedef struct retro_sample_counts {
 } retro_sample_counts;
 extern retro_sample_counts retro_ybuffer_counts;
 void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
+/* The same counts for the counting build of simd-avx512 (kernel_simd_avx512.c compiled with
+ * RETRO_COUNT_SAMPLES): a sample is a live lane at a distance its group evaluated, painting a
+ * lane that rose; probes and windows are retro_skip_group's. Frames the vector path does not
+ * render (bilinear, lod) go to the uncounted scalar kernel and count nothing. */
+extern retro_sample_counts retro_simd_counts;
+void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
 
 /* Whether the ybuffer strip skips this frame: mode exact with a pyramid (any per-sample
  * effects: fog changes colours only, bilinear is covered by the bound). */
@@ -238,7 +247,14 @@ retro_skip_group(const retro_pyramid *p, const retro_frame *f, retro_skip_grp *g
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
     const int64_t height = f->height;
     int L = g->level, at = 0, Ia0 = 0, Ja0 = 0, Ib0 = 0, Jb0 = 0; /* corners at distance at */
+    int tries = RETRO_SKIP_GROUP_TRIES; /* windows that may fail before the probe gives up */
+#ifdef RETRO_COUNT_SAMPLES
+    retro_simd_counts.probes++;
+#endif
     while (d < d_end) {
+#ifdef RETRO_COUNT_SAMPLES
+        retro_simd_counts.windows++;
+#endif
         const int B = 1 << L;
         const float spread = (float)d * g->g, avail = (float)(B - 1) - spread;
         if (!(avail >= 0.0f)) { /* the group is wider than a block here */
@@ -285,7 +301,7 @@ retro_skip_group(const retro_pyramid *p, const retro_frame *f, retro_skip_grp *g
                 continue;
             }
         }
-        if (L == RETRO_PYR_LMIN || (float)((1 << (L - 1)) - 1) < spread)
+        if (L == RETRO_PYR_LMIN || (float)((1 << (L - 1)) - 1) < spread || --tries == 0)
             break;
         L--;
     }

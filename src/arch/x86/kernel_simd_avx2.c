@@ -219,12 +219,14 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
     retro_simd_grp g;
     int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
     if (skip) /* skipping as in simd-avx512 */
-        RETRO_SIMD_GRP_INIT(&g, f, u0, u0 + n - 1);
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
     for (int d = 1; d < f->D; d++) {
         if (!lanes_of(_mm256_cmpgt_epi32(_mm256_set1_epi32(f->vcap[d]), y)))
             break;
         if (skip && d >= probe) {
-            const int e = RETRO_SIMD_PROBE(&g, f, d, hmin(y), pow2);
+            int ys[LANES];
+            _mm256_storeu_si256((__m256i *)ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
             if (e > d) {
                 d = e - 1; /* the loop's d++ */
                 probe = e;

@@ -75,6 +75,13 @@
 
 enum { LANES = 16 };
 
+#ifdef RETRO_COUNT_SAMPLES /* the counting build (hmax_pyramid.h), never the kernel's own */
+retro_sample_counts retro_simd_counts;
+#define COUNT_LANES(field, n) (retro_simd_counts.field += (uint64_t)(n))
+#else
+#define COUNT_LANES(field, n) ((void)0)
+#endif
+
 #define FLOOR (_MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)
 #define TRUNC (_MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
 
@@ -263,12 +270,14 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
     retro_simd_grp g;
     int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
     if (skip)
-        RETRO_SIMD_GRP_INIT(&g, f, u0, u0 + n - 1);
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
     for (int d = 1; d < f->D;) {
         if (!_mm512_cmplt_epi32_mask(y, _mm512_set1_epi32(f->vcap[d])))
             break;
         if (skip && d >= probe) { /* some lane has y < vcap[d] <= H, so the minimum is < H */
-            const int e = RETRO_SIMD_PROBE(&g, f, d, _mm512_reduce_min_epi32(y), pow2);
+            int ys[LANES];
+            _mm512_storeu_si512(ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
             if (e > d) {
                 d = e;
                 probe = e;
@@ -287,6 +296,8 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
         h = sample(f, sf, k, rx, ry, d + 1, &at, pow2, packed);
         hd = d + 1;
         __mmask16 up = _mm512_cmpgt_epi32_mask(v, y);
+        COUNT_LANES(evaluated, n);
+        COUNT_LANES(painting, __builtin_popcount(up));
         if (up) {
             int lo = _mm512_mask_reduce_min_epi32(up, y) + 1, hi = _mm512_mask_reduce_max_epi32(up, v);
             __m512i c = colours(f, at_d, up, packed);

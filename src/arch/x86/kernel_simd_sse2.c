@@ -193,17 +193,14 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
     retro_simd_grp g;
     int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
     if (skip) /* skipping as in simd-avx512 */
-        RETRO_SIMD_GRP_INIT(&g, f, u0, u0 + n - 1);
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
     for (int d = 1; d < f->D; d++) {
         if (!lanes_of(_mm_cmpgt_epi32(_mm_set1_epi32(f->vcap[d]), y)))
             break;
         if (skip && d >= probe) {
-            int ys[LANES], ymin;
+            int ys[LANES];
             _mm_storeu_si128((__m128i *)ys, y);
-            ymin = ys[0] < ys[1] ? ys[0] : ys[1];
-            ymin = ys[2] < ymin ? ys[2] : ymin;
-            ymin = ys[3] < ymin ? ys[3] : ymin;
-            const int e = RETRO_SIMD_PROBE(&g, f, d, ymin, pow2);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
             if (e > d) {
                 d = e - 1; /* the loop's d++ */
                 probe = e;
