@@ -47,7 +47,7 @@ PEER_SRC := $(wildcard src/peer/*.c)
 LIB_SRC  := $(sort $(filter-out src/cli/% src/submission/% src/peer/% $(COURSE_SRC),\
               $(shell find src tools -name '*.c')))
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
-TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c $(PEER_SRC)
+TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c tests/skipping_rig.c $(PEER_SRC)
 # retro view's SDL-free parts, tested in tests/test_view_keys.c.
 TEST_CLI := $(addprefix src/cli/,view_keys.c view_font.c view_overlay.c view_render.c \
               scene_job.c scene_args.c cli_args.c work_estimate.c)
@@ -56,7 +56,7 @@ COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 COUNTED  := $(sort $(shell find src -name 'kernel_*.c'))
 
 # The ybuffer kernel once more, counting the samples it evaluates (retro render --stats).
-LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/voxel/ybuffer_counted.o
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/src/voxel/ybuffer_counted.o $(BUILD)/src/voxel/simd_avx512_counted.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o) $(TEST_CLI:%.c=$(BUILD)/%.o)
 COUNT_OBJ := $(COUNTED:%.c=$(BUILD)/count/%.o) $(COUNT_TEST_SRC:%.c=$(BUILD)/%.o)
@@ -133,6 +133,15 @@ $(BUILD)/src/voxel/ybuffer_counted.o: src/voxel/kernel_ybuffer.c
 	@$(if $(Q),echo "  CC      $< (counting samples)")
 	$(Q)$(CC) $(ALLCFLAGS) -DRETRO_COUNT_SAMPLES -Dretro_kernel_ybuffer=retro_kernel_ybuffer_counted \
 	  -Dretro_strip_ybuffer=retro_strip_ybuffer_counted -c $< -o $@
+
+# The counting build of simd-avx512 (samples per SIMD group; hmax_pyramid.h), for --stats and
+# the benchmark's samples/frame.
+$(BUILD)/src/voxel/simd_avx512_counted.o: src/arch/x86/kernel_simd_avx512.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CC      $< (counting samples)")
+	$(Q)$(CC) $(ALLCFLAGS) $(ISA_FLAGS_avx512) -DRETRO_COUNT_SAMPLES \
+	  -Dretro_kernel_simd_avx512=retro_kernel_simd_avx512_counted \
+	  -Dretro_strip_simd_avx512=retro_strip_simd_avx512_counted -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	$(Q)rm -f $@ && ar rcs $@ $^

@@ -2,6 +2,7 @@
 // screen, distance), times retro_render() on it, and writes BENCH.md and the charts script.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -12,6 +13,9 @@
 #include "busy.h"
 #include "cases.h"
 #include "extras.h"
+extern "C" {
+#include "hmax_pyramid.h"
+}
 #include "options.h"
 #include "peer_cases.h"
 #include "pin.h"
@@ -33,6 +37,7 @@ static struct {
 // binds thread t to core t). It is re-bound only when n changes, because the omp kernel
 // remembers per thread where it bound it and would not notice being moved.
 static int bound_cores = 0;
+static bool simd_skip = false; // --simd-skip
 
 static void bind_for(int threads)
 {
@@ -41,6 +46,37 @@ static void bind_for(int threads)
     char note[160];
     pin_thread_to_cores(0, threads, note, sizeof note);
     bound_cores = threads;
+}
+
+// Samples the counting build of the case's vector path evaluates in one frame (untimed,
+// after the timed ones; hmax_pyramid.h): simd-avx512's for the kernels that run its strips
+// (the simd kernels and the threaded ones, per group of 16 columns), ybuffer's for ybuffer;
+// NaN for other kernels, modes other than exact, and frames the vector path does not render.
+static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
+{
+    if (c->direct || c->mode != RETRO_MODE_EXACT)
+        return std::nan("");
+    const char *name = c->kernel->name;
+    retro_kernel k;
+    retro_sample_counts *n;
+    if (!std::strcmp(name, "ybuffer")) {
+        k = *c->kernel;
+        k.fn = retro_kernel_ybuffer_counted;
+        n = &retro_ybuffer_counts;
+    } else if (!std::strncmp(name, "simd-", 5) || (c->kernel->flags & RETRO_KF_THREADED)) {
+        const retro_kernel *v = retro_kernel_find("simd-avx512");
+        if (!v || !retro_kernel_runs_here(v) || retro_kernel_check(v, c->mode, c->fx, nullptr, 0))
+            return std::nan("");
+        k = *v;
+        k.fn = retro_kernel_simd_avx512_counted;
+        n = &retro_simd_counts;
+    } else
+        return std::nan("");
+    std::memset(n, 0, sizeof *n);
+    player_t q = *p;
+    if (retro_render(&live.rc, &k, c->mode, &q, frame))
+        return std::nan("");
+    return static_cast<double>(n->evaluated);
 }
 
 static void run_case(benchmark::State &st, const BenchCase *c)
@@ -58,6 +94,8 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         retro_ctx_init(&live.rc);
         live.rc.threads = c->threads;
         live.rc.fx = c->fx;
+        live.rc.no_skip = c->no_skip;
+        live.rc.simd_skip = simd_skip;
         live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
         live.owner = c;
         bind_for(c->threads);
@@ -82,6 +120,12 @@ static void run_case(benchmark::State &st, const BenchCase *c)
             benchmark::ClobberMemory();
         }
     using benchmark::Counter;
+    double evaluated = count_samples(c, &p, &frame);
+    if (!std::isnan(evaluated)) {
+        const_cast<BenchCase *>(c)->samples = evaluated;
+        st.counters["evaluated/frame"] = evaluated;
+        st.counters["evaluated%"] = 100.0 * evaluated / (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
+    }
     // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
     // same clock (CPU or real) as the case's own time.
     const auto ms_flags = Counter::kIsIterationInvariantRate | Counter::kInvert;
@@ -153,6 +197,7 @@ int main(int argc, char **argv)
         return 1;
     }
     plan.cores = ctx.cores;
+    simd_skip = plan.simd_skip;
     plan_cases(&plan);
     if (!opt.no_extras && opt.scene.empty())
         plan_extras(&plan);

@@ -61,7 +61,7 @@ static std::string percent(double v)
 
 static std::string kernel_cell(const ReportRow &r)
 {
-    return std::string("`") + r.kernel->name + "` | " + std::to_string(r.threads);
+    return std::string("`") + r.kernel->name + "`" + (r.no_skip ? " (no skipping)" : "") + " | " + std::to_string(r.threads);
 }
 
 static void matrix_table(std::ostream &o, const BenchPlan &plan, retro_mode mode)

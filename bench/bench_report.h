@@ -12,6 +12,7 @@
 struct ReportRow {
     const retro_kernel *kernel;
     int threads;
+    bool no_skip = false; // the --no-skip twins: occlusion skipping off
 };
 
 // The rows with at least one case in group and mode that ran, in kernel-table order.

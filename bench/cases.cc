@@ -4,18 +4,20 @@
 #include <algorithm>
 
 static bool same(const BenchCase &c, const retro_kernel *k, int threads, const bench_scene *s,
-                 retro_mode mode, int w, int h, int d)
+                 retro_mode mode, int w, int h, int d, bool no_skip)
 {
+    if (c.no_skip != no_skip)
+        return false;
     return !c.direct && !c.fx && !(c.groups & (GROUP_SUBMISSION | GROUP_EFFECTS)) && c.kernel == k &&
            c.threads == threads && c.scene == s && c.mode == mode && c.W == w &&
            c.H == h && c.D == d;
 }
 
 const BenchCase *BenchPlan::find(const retro_kernel *k, int threads, const bench_scene *s,
-                                 retro_mode mode, int w, int h, int d) const
+                                 retro_mode mode, int w, int h, int d, bool no_skip) const
 {
     for (const auto &c : cases)
-        if (same(*c, k, threads, s, mode, w, h, d))
+        if (same(*c, k, threads, s, mode, w, h, d, no_skip))
             return c.get();
     return nullptr;
 }
@@ -32,11 +34,11 @@ std::vector<int> plan_thread_counts(const retro_kernel *k, int cores)
     return t;
 }
 
-static void add(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
-                retro_mode mode, int w, int h, int d, unsigned group)
+static void add1(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
+                 retro_mode mode, int w, int h, int d, unsigned group, bool no_skip)
 {
     for (auto &have : plan->cases)
-        if (same(*have, k, threads, s, mode, w, h, d)) {
+        if (same(*have, k, threads, s, mode, w, h, d, no_skip)) {
             have->groups |= group;
             return;
         }
@@ -50,10 +52,21 @@ static void add(BenchPlan *plan, const retro_kernel *k, int threads, const bench
     c->H = h;
     c->D = d;
     c->groups = group;
+    c->no_skip = no_skip;
     c->name = std::string(retro_mode_name(mode)) + "/" + s->name + "/" + k->name + "/" +
               std::to_string(threads) + "t/" + std::to_string(w) + "x" + std::to_string(h) +
-              "/D" + std::to_string(d);
+              "/D" + std::to_string(d) + (no_skip ? "/noskip" : "");
     plan->cases.push_back(std::move(c));
+}
+
+// The case, and with --no-skip its twin without occlusion skipping (mode exact only: the
+// mode that skips; naive never does), so both are timed in one run.
+static void add(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
+                retro_mode mode, int w, int h, int d, unsigned group)
+{
+    add1(plan, k, threads, s, mode, w, h, d, group, false);
+    if (plan->no_skip_twins && mode == RETRO_MODE_EXACT && std::string(k->name) != "naive")
+        add1(plan, k, threads, s, mode, w, h, d, group, true);
 }
 
 void plan_cases(BenchPlan *plan)

@@ -30,6 +30,7 @@ struct BenchCase {
     const bench_scene *scene;
     retro_mode mode;
     int W, H, D;
+    bool no_skip = false;        // retro_ctx.no_skip: occlusion skipping off (--no-skip twins)
     unsigned groups;             // GROUP_* bits
     std::string name;            // mode/scene/kernel/threads/WxH/D: the benchmark's name
     // Extras (extras.cc), never matched as matrix cases: a course-style render() called
@@ -41,6 +42,7 @@ struct BenchCase {
     // Filled by the reporter once the case has run.
     bool ran = false;
     double median_ms = std::numeric_limits<double>::quiet_NaN(); // median ms/frame
+    double samples = std::numeric_limits<double>::quiet_NaN();   // evaluated per frame (counted)
     double cv = std::numeric_limits<double>::quiet_NaN();        // spread over repetitions
     std::string error;           // non-empty when the case was skipped
 };
@@ -54,10 +56,12 @@ struct BenchPlan {
     std::vector<int> distances;                     // distance sweep, screen = matrix screen
     int W = 640, H = 480, D = 800;                  // the matrix frame
     int cores = 1;
+    bool no_skip_twins = false;                     // --no-skip: every mode exact case twice
+    bool simd_skip = false;                         // --simd-skip: retro_ctx.simd_skip in every case
 
     // The case with exactly these parameters, or nullptr.
     const BenchCase *find(const retro_kernel *k, int threads, const bench_scene *s,
-                          retro_mode mode, int W, int H, int D) const;
+                          retro_mode mode, int W, int H, int D, bool no_skip = false) const;
 };
 
 // Thread counts a kernel is timed at: 1 unless threaded, else 1, 2, 4 ... and cores.

@@ -6,25 +6,26 @@
 
 #include <cmath>
 #include <set>
+#include <tuple>
 
 static const double NaN = std::nan("");
 
 std::vector<ReportRow> report_rows(const BenchPlan &plan, unsigned group, retro_mode mode)
 {
-    std::set<std::pair<int, int>> seen;
+    std::set<std::tuple<int, int, bool>> seen;
     for (const auto &c : plan.cases)
         if ((c->groups & group) && c->mode == mode && c->ran)
-            seen.insert({c->kernel_index, c->threads});
+            seen.insert({c->kernel_index, c->threads, c->no_skip});
     std::vector<ReportRow> rows;
-    for (auto [k, t] : seen)
-        rows.push_back({&retro_kernels[k], t});
+    for (auto [k, t, n] : seen)
+        rows.push_back({&retro_kernels[k], t, n});
     return rows;
 }
 
 double report_ms(const BenchPlan &plan, const ReportRow &row, const bench_scene *s,
                  retro_mode mode, int W, int H, int D)
 {
-    const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, W, H, D);
+    const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, W, H, D, row.no_skip);
     return c && c->ran && c->error.empty() ? c->median_ms : NaN;
 }
 
@@ -63,17 +64,18 @@ double report_speedup(const BenchPlan &plan, const ReportRow &row, retro_mode mo
 
 std::string report_label(const ReportRow &row)
 {
+    std::string skip = row.no_skip ? ", no skipping" : "";
     if (!(row.kernel->flags & RETRO_KF_THREADED))
-        return row.kernel->name;
+        return row.kernel->name + skip;
     return std::string(row.kernel->name) + ", " + std::to_string(row.threads) +
-           (row.threads == 1 ? " thread" : " threads");
+           (row.threads == 1 ? " thread" : " threads") + skip;
 }
 
 double report_max_cv(const BenchPlan &plan, const ReportRow &row, retro_mode mode)
 {
     double worst = NaN;
     for (const bench_scene *s : plan.scenes) {
-        const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, plan.W, plan.H, plan.D);
+        const BenchCase *c = plan.find(row.kernel, row.threads, s, mode, plan.W, plan.H, plan.D, row.no_skip);
         if (c && c->ran && c->error.empty() && !std::isnan(c->cv))
             worst = std::isnan(worst) ? c->cv : std::max(worst, c->cv);
     }

@@ -93,6 +93,8 @@ typedef struct retro_frame {
     /* mode exact: the map's maximum-height pyramid when occlusion skipping is on
      * (src/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
     const struct retro_pyramid *pyr;
+    /* with pyr: the SIMD strips skip too, per group of columns (retro_ctx.simd_skip) */
+    int simd_skip;
 } retro_frame;
 
 /* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
@@ -137,6 +139,10 @@ typedef struct retro_ctx {
      * evaluated), for measuring what it saves. */
     struct retro_pyramid *pyr;
     int no_skip;
+    /* simd_skip = 1: the SIMD strips (and the threaded kernels running them) skip as well, per
+     * group of adjacent columns (docs/SKIPPING.md). Exact, but not yet faster than their plain
+     * loop where measured, so off by default; the scalar strips always skip unless no_skip. */
+    int simd_skip;
 } retro_ctx;
 
 void retro_ctx_init(retro_ctx *rc);

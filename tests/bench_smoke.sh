@@ -45,5 +45,22 @@ python3 scripts/bench-csv.py "$tmp/bench.json" >"$tmp/bench.csv" 2>&1
 check "$tmp/bench.csv" "^$case,exact,flat-64,naive,1,32x24,16,\(repetition\|median\),[0-9]" "make bench-csv's converter lost the case"
 check "$tmp/BENCH.md" 'library_build_type' "BENCH.md does not explain library_build_type"
 check "$tmp/bench.json" '"retro_quick": "false"' "the JSON does not record whether the run was quick"
+# --no-skip: each mode exact case also timed with skipping off, side by side, with the samples
+# the counting build evaluates per frame beside the time (docs/SKIPPING.md)
+yb=exact/flat-64/ybuffer/1t/32x24/D16
+mkdir -p "$tmp/ns"
+if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=16 --no-skip --modes=exact \
+  --benchmark_filter="^exact/flat-64/ybuffer/1t/32x24/D(16|100)(/noskip)?\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
+  --benchmark_min_warmup_time=0 --report="$tmp/ns" --charts="$tmp/ns.gp" \
+  --benchmark_out="$tmp/ns.json" --benchmark_out_format=json >"$tmp/ns.out" 2>&1; then
+  echo "FAIL: retro-bench --no-skip exited with an error:"
+  cat "$tmp/ns.out"
+  exit 1
+fi
+check "$tmp/ns.json" "\"name\": \"$yb/noskip\"" "--no-skip planned no twin"
+check "$tmp/ns.json" "\"name\": \"$yb\"" "--no-skip lost the skipping case"
+check "$tmp/ns.json" '"evaluated/frame"' "no evaluated/frame counter"
+check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipping in BENCH.md"
+check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
 [ "$fail" = 0 ] && echo "ok: retro-bench timed $case"
 exit "$fail"

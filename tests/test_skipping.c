@@ -1,5 +1,7 @@
-/* Occlusion skipping (docs/SKIPPING.md, src/hmax_pyramid.h): cases aimed at the bound, each
- * rendered by naive, by ybuffer with skipping and by ybuffer without, compared byte for byte.
+/* Occlusion skipping (docs/SKIPPING.md, src/voxel/hmax_pyramid.h): cases aimed at the bound,
+ * each rendered by naive, by ybuffer with skipping and by ybuffer without, and by every
+ * kernel whose strips skip at every ISA level and thread count (the shared checker,
+ * skipping_rig.c), compared byte for byte.
  * Every frame that should skip is checked to have had a pyramid, so a case cannot pass by
  * quietly taking the path without skipping. The counting build checks that skipping skips:
  * fewer samples evaluated, exactly the same samples painting. Counts only, never timings. */
@@ -11,101 +13,8 @@
 #include "hmax_pyramid.h"
 #include "kernels.h"
 #include "retro_scene.h"
+#include "skipping_rig.h"
 #include "test_util.h"
-
-enum { NAIVE, SKIP, NOSKIP, NCTX };
-
-typedef struct {
-    retro_ctx rc[NCTX];
-    uint32_t *ref, *out;
-    size_t cap;
-    long frames, skipped_frames;
-} trio;
-
-static trio *rig_open(void)
-{
-    trio *g = calloc(1, sizeof *g);
-    cr_assert(g);
-    for (int i = 0; i < NCTX; i++)
-        retro_ctx_init(&g->rc[i]);
-    g->rc[NOSKIP].no_skip = 1;
-    return g;
-}
-
-static void rig_close(trio *g)
-{
-    for (int i = 0; i < NCTX; i++)
-        retro_ctx_free(&g->rc[i]);
-    free(g->ref);
-    free(g->out);
-    free(g);
-}
-
-/* A new map may reuse a freed one's address: the contexts must forget their caches. */
-static void new_map(trio *g)
-{
-    for (int i = 0; i < NCTX; i++)
-        retro_ctx_map_changed(&g->rc[i]);
-}
-
-/* Colours that differ from cell to cell, so a frame that reads the wrong cell shows it. */
-static void paint_cells(retro_map *m)
-{
-    for (int j = 0; j < m->size; j++)
-        for (int i = 0; i < m->size; i++)
-            m->color[(size_t)j * (size_t)m->size + (size_t)i] =
-                ((uint32_t)i * 73856093u ^ (uint32_t)j * 19349663u ^ 0x9e3779b9u) << 8;
-}
-
-static void make_map(retro_map *m, int S)
-{
-    char err[256];
-    cr_assert_eq(retro_map_alloc(m, S, err, sizeof err), 0, "%s", err);
-    paint_cells(m);
-}
-
-/* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares. */
-static void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
-                  const retro_effects *fx)
-{
-    size_t n = (size_t)W * (size_t)H;
-    if (n > g->cap) {
-        g->ref = realloc(g->ref, n * sizeof *g->ref);
-        g->out = realloc(g->out, n * sizeof *g->out);
-        cr_assert(g->ref && g->out);
-        g->cap = n;
-    }
-    ctx_t c = {W, H, m->size, D, 0x66a3ff00u, m->height, m->color, g->ref};
-    const retro_kernel *naive = retro_kernel_find("naive"), *yb = retro_kernel_find("ybuffer");
-    g->rc[NAIVE].fx = g->rc[SKIP].fx = g->rc[NOSKIP].fx = fx;
-    cr_assert_eq(retro_render(&g->rc[NAIVE], naive, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "%s", what);
-    for (int k = SKIP; k <= NOSKIP; k++) {
-        c.out = g->out;
-        memset(g->out, 0xab, n * sizeof *g->out);
-        cr_assert_eq(retro_render(&g->rc[k], yb, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "%s", what);
-        if (memcmp(g->ref, g->out, n * sizeof *g->out)) {
-            size_t i = 0;
-            while (g->ref[i] == g->out[i])
-                i++;
-            cr_assert_fail("%s, skipping %s: S %d, (%.9g, %.9g), angle %d, height %d, %dx%d, D %d: "
-                           "pixel (%zu, %zu) is %08x, naive %08x",
-                           what, k == SKIP ? "on" : "off", m->size, (double)p.x, (double)p.y, p.angle, p.height, W,
-                           H, D, i % (size_t)W + 1, (size_t)H - i / (size_t)W, g->out[i], g->ref[i]);
-        }
-    }
-    /* The skipping context took the skipping path whenever the map has pyramid levels. */
-    cr_assert_eq(g->rc[SKIP].frame.pyr != NULL, m->size > 4, "%s: pyramid %s for S %d", what,
-                 g->rc[SKIP].frame.pyr ? "present" : "absent", m->size);
-    cr_assert_null(g->rc[NOSKIP].frame.pyr, "%s: no_skip still had a pyramid", what);
-    g->frames++;
-    g->skipped_frames += g->rc[SKIP].frame.pyr != NULL;
-}
-
-static player_t at(float x, float y, int angle, int height)
-{
-    player_t p = {x, y, angle, height, 0, 0, 0};
-    return p;
-}
 
 static const int angles[] = {0, 1, 30, 45, 89, 90, 137, 180, 200, 270, 315, 359};
 #define NANGLES ((int)(sizeof angles / sizeof angles[0]))

@@ -13,7 +13,7 @@ static void help(void)
 {
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
-           "                        [--threads N] [--lod L]\n"
+           "                        [--threads N] [--lod L] [--no-skip] [--simd-skip] [--stats]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "SCENE is a file ending in .scene (README, Scenes): its map, camera, screen, sky and\n"
@@ -35,8 +35,11 @@ static void help(void)
            "  --threads N threads for threaded kernels (default OMP_NUM_THREADS or all cores)\n"
            "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
            "              image is the same, only slower\n"
+           "  --simd-skip the SIMD strips (and omp, pthreads) skip too, per group of columns;\n"
+           "              exact, off by default: not yet faster where measured\n"
            "  --stats     also print the samples the ybuffer kernel evaluates and those that\n"
-           "              paint, and their share of the frame's samples (W x (D-1))\n"
+           "              paint, and their share of the frame's samples (W x (D-1)); and\n"
+           "              simd-avx512's, where it runs\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n"
            "A render that would take more than a few seconds (the naive reference at a large\n"
            "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
@@ -70,6 +73,19 @@ static int print_stats(render_job *j, const player_t *p)
     printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
     printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
     printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
+    /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
+    const retro_kernel *vk = retro_kernel_find("simd-avx512");
+    if (vk && retro_kernel_runs_here(vk) && !retro_kernel_check(vk, j->mode, j->rc.fx, NULL, 0)) {
+        retro_kernel vc = *vk;
+        vc.fn = retro_kernel_simd_avx512_counted;
+        memset(&retro_simd_counts, 0, sizeof retro_simd_counts);
+        if ((e = retro_render(&j->rc, &vc, j->mode, p, &j->c)))
+            return cli_error("render", "%s", retro_strerror(e));
+        const retro_sample_counts *v = &retro_simd_counts;
+        printf("simd-avx512 evaluated: %" PRIu64 " (%.2f%%), painting: %" PRIu64 ", probes: %" PRIu64
+               ", windows: %" PRIu64 "\n",
+               v->evaluated, all > 0 ? 100.0 * (double)v->evaluated / all : 0.0, v->painting, v->probes, v->windows);
+    }
     return 0;
 }
 
@@ -79,13 +95,15 @@ int cmd_render(int argc, char **argv)
     render_opts o;
     render_opts_init(&o);
     /* The two flags without a value are taken out before the shared parser sees argv. */
-    int no_skip = 0, stats = 0, n = 0;
+    int no_skip = 0, simd_skip = 0, stats = 0, n = 0;
     char **args = malloc(((size_t)argc + 1) * sizeof *args);
     if (!args)
         return cli_error("render", "out of memory");
     for (int i = 0; i < argc; i++) {
         if (i > 0 && !strcmp(argv[i], "--no-skip"))
             no_skip = 1;
+        else if (i > 0 && !strcmp(argv[i], "--simd-skip"))
+            simd_skip = 1;
         else if (i > 0 && !strcmp(argv[i], "--stats"))
             stats = 1;
         else
@@ -103,6 +121,7 @@ int cmd_render(int argc, char **argv)
     if (job_open("render", &o, &j))
         return CLI_EBADINPUT;
     j.rc.no_skip = no_skip;
+    j.rc.simd_skip = simd_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
     int status = job_write("render", &j, &p, out_path);

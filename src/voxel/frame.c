@@ -399,9 +399,11 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     case RETRO_MODE_FIXED: setup_fixed(rc, f, p); break;
     default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
+    f->simd_skip = 0;
 #ifndef RETRO_SUBMISSION
     if (mode == RETRO_MODE_EXACT && skip_pyramid(rc, hm, S, &f->pyr))
         return RETRO_ENOMEM;
+    f->simd_skip = f->pyr && rc->simd_skip;
 #endif
     return RETRO_OK;
 }

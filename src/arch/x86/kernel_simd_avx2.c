@@ -210,18 +210,38 @@ static inline __m256i fog_colours(__m256i c, int F, uint32_t sky)
 /* Columns u0..u0+n-1 (n <= 8), front to back, as in simd-avx512. Lanes past n start full. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed, const int fog)
+            const int pow2, const int packed, const int fog, const int skip)
 {
     __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
     __m256 rx = _mm256_maskload_ps(f->rx + u0, live), ry = _mm256_maskload_ps(f->ry + u0, live);
     __m256i y = _mm256_andnot_si256(live, k->H);
     __m256i at, h = sample(f, sf, k, rx, ry, 1, &at, pow2, packed);
+    retro_simd_grp g;
+    int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    if (skip) /* skipping as in simd-avx512 */
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
     for (int d = 1; d < f->D; d++) {
         if (!lanes_of(_mm256_cmpgt_epi32(_mm256_set1_epi32(f->vcap[d]), y)))
             break;
+        if (skip && d >= probe) {
+            int ys[LANES];
+            _mm256_storeu_si256((__m256i *)ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
+            if (e > d) {
+                d = e - 1; /* the loop's d++ */
+                probe = e;
+                batch = RETRO_SIMD_SKIP_NEAR;
+                continue;
+            }
+            probe = d + batch;
+            batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
+        }
+        if (skip && hd != d)
+            h = sample(f, sf, k, rx, ry, d, &at, pow2, packed);
         __m256i v = exact_project(h, f->kd[d], k), at_d = at;
         /* The next distance's loads issue before the paint branch, as in simd-avx512. */
         h = sample(f, sf, k, rx, ry, d + 1, &at, pow2, packed);
+        hd = d + 1;
         __m256i up = _mm256_cmpgt_epi32(v, y);
         if (lanes_of(up)) {
             /* Lanes that do not rise must not widen the rows; v >= 0, so 0 leaves them out. */

@@ -75,6 +75,13 @@
 
 enum { LANES = 16 };
 
+#ifdef RETRO_COUNT_SAMPLES /* the counting build (hmax_pyramid.h), never the kernel's own */
+retro_sample_counts retro_simd_counts;
+#define COUNT_LANES(field, n) (retro_simd_counts.field += (uint64_t)(n))
+#else
+#define COUNT_LANES(field, n) ((void)0)
+#endif
+
 #define FLOOR (_MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)
 #define TRUNC (_MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)
 
@@ -248,30 +255,56 @@ static inline __m512i fog_colours(__m512i c, int F, uint32_t sky)
 }
 
 /* Columns u0..u0+n-1 (n <= 16), front to back: the design note's mode exact. Lanes past n
- * start full (y = H), so they neither paint nor hold the group back. */
+ * start full (y = H), so they neither paint nor hold the group back. With skip, the group
+ * probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps over the
+ * distances retro_skip_group proves no lane paints; h then holds a distance the loop no longer
+ * wants, and hd says which. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed, const int fog)
+            const int pow2, const int packed, const int fog, const int skip)
 {
     __mmask16 live = (__mmask16)((1u << n) - 1);
     __m512 rx = _mm512_maskz_loadu_ps(live, f->rx + u0), ry = _mm512_maskz_loadu_ps(live, f->ry + u0);
     __m512i y = _mm512_mask_mov_epi32(k->H, live, _mm512_setzero_si512());
     __m512i at, h = sample(f, sf, k, rx, ry, 1, &at, pow2, packed);
-    for (int d = 1; d < f->D; d++) {
+    retro_simd_grp g;
+    int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    if (skip)
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
+    for (int d = 1; d < f->D;) {
         if (!_mm512_cmplt_epi32_mask(y, _mm512_set1_epi32(f->vcap[d])))
             break;
+        if (skip && d >= probe) { /* some lane has y < vcap[d] <= H, so the minimum is < H */
+            int ys[LANES];
+            _mm512_storeu_si512(ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
+            if (e > d) {
+                d = e;
+                probe = e;
+                batch = RETRO_SIMD_SKIP_NEAR;
+                continue;
+            }
+            probe = d + batch;
+            batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
+        }
+        if (skip && hd != d)
+            h = sample(f, sf, k, rx, ry, d, &at, pow2, packed);
         __m512i v = exact_project(h, f->kd[d], k), at_d = at;
         /* The next distance's loads issue before the paint branch, so they are in flight
          * when it mispredicts (15-25% faster than sampling after painting). d = D samples a
          * valid cell that is never used. */
         h = sample(f, sf, k, rx, ry, d + 1, &at, pow2, packed);
+        hd = d + 1;
         __mmask16 up = _mm512_cmpgt_epi32_mask(v, y);
+        COUNT_LANES(evaluated, n);
+        COUNT_LANES(painting, __builtin_popcount(up));
         if (up) {
             int lo = _mm512_mask_reduce_min_epi32(up, y) + 1, hi = _mm512_mask_reduce_max_epi32(up, v);
             __m512i c = colours(f, at_d, up, packed);
             paint_rows(f, u0, lo, hi, y, v, fog ? fog_colours(c, f->fog[d], f->sky) : c);
             y = _mm512_max_epi32(y, v);
         }
+        d++;
     }
     int lo = _mm512_mask_reduce_min_epi32(live, y) + 1;
     paint_rows(f, u0, lo, f->H, y, k->H, _mm512_set1_epi32((int)f->sky));

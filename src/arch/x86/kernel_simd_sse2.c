@@ -179,7 +179,7 @@ sample(const retro_frame *f, const retro_simd_frame *sf, const consts *k, __m128
 /* Columns u0..u0+n-1 (n <= 4), front to back, as in simd-avx512. Lanes past n start full. */
 static inline __attribute__((always_inline)) void
 exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0, int n,
-            const int pow2, const int packed, const int fog)
+            const int pow2, const int packed, const int fog, const int skip)
 {
     float rxs[LANES] = {0}, rys[LANES] = {0};
     for (int l = 0; l < n; l++) {
@@ -190,12 +190,32 @@ exact_group(const retro_frame *f, const retro_simd_frame *sf, const consts *k, i
     __m128i live = _mm_cmpgt_epi32(_mm_set1_epi32(n), _mm_setr_epi32(0, 1, 2, 3));
     __m128i y = _mm_andnot_si128(live, k->H);
     __m128i at, h = sample(f, sf, k, rx, ry, 1, &at, pow2, packed);
+    retro_simd_grp g;
+    int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    if (skip) /* skipping as in simd-avx512 */
+        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
     for (int d = 1; d < f->D; d++) {
         if (!lanes_of(_mm_cmpgt_epi32(_mm_set1_epi32(f->vcap[d]), y)))
             break;
+        if (skip && d >= probe) {
+            int ys[LANES];
+            _mm_storeu_si128((__m128i *)ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
+            if (e > d) {
+                d = e - 1; /* the loop's d++ */
+                probe = e;
+                batch = RETRO_SIMD_SKIP_NEAR;
+                continue;
+            }
+            probe = d + batch;
+            batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
+        }
+        if (skip && hd != d)
+            h = sample(f, sf, k, rx, ry, d, &at, pow2, packed);
         __m128i v = exact_project(h, f->kd[d], k), at_d = at;
         /* The next distance's loads issue before the paint branch, as in simd-avx512. */
         h = sample(f, sf, k, rx, ry, d + 1, &at, pow2, packed);
+        hd = d + 1;
         int up = lanes_of(_mm_cmpgt_epi32(v, y));
         if (up) {
             int ys[LANES], vs[LANES];
