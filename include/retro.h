@@ -18,6 +18,8 @@
 extern "C" {
 #endif
 
+typedef struct retro_mesh_state retro_mesh_state;
+
 typedef enum {
     RETRO_MODE_EXACT = 0,  /* the specification done right, binary32 */
     RETRO_MODE_COURSE = 1, /* bit-compatible with the course's reference images */
@@ -137,6 +139,11 @@ typedef struct retro_ctx {
      * evaluated), for measuring what it saves. */
     struct retro_pyramid *pyr;
     int no_skip;
+    /* The mesh family's state (src/mesh/family.c): the module's context, the frame's inputs,
+     * the last frame's counts; NULL until a mesh frame is set up. */
+    struct retro_mesh_state *mesh;
+    /* Set by a kernel that fails after setup (out of memory); retro_render returns it. */
+    retro_err kernel_err;
 } retro_ctx;
 
 void retro_ctx_init(retro_ctx *rc);
@@ -204,6 +211,7 @@ extern const size_t retro_kernel_count;
 extern const retro_family *const retro_families[];
 extern const size_t retro_family_count;
 extern const retro_family retro_family_voxel;
+extern const retro_family retro_family_mesh; /* include/retro_mesh.h, docs/MESH.md */
 
 const retro_kernel *retro_kernel_find(const char *name);
 const retro_family *retro_family_find(const char *name);
