@@ -179,6 +179,8 @@ enum {
 
 /* A family of kernels: kernels that render the same frames from the same frame constants and
  * are checked against one reference kernel. voxel is the first (src/voxel/family.c). */
+struct retro_kernel;
+
 typedef struct retro_family {
     const char *name;                /* "voxel": `retro kernels` groups by it */
     const char *reference;           /* the kernel every other kernel of the family must equal */
@@ -191,6 +193,12 @@ typedef struct retro_family {
     /* Validates the inputs for mode and builds the frame constants in rc; *frame is what the
      * family's kernels receive. */
     retro_err (*setup)(retro_ctx *rc, int mode, const player_t *p, const ctx_t *c, const void **frame);
+    /* The pixels (of npx) kernel k may differ from the reference by in mode with the effects
+     * fx, as the family's documentation explains and bounds (mesh-painter without culling,
+     * docs/MESH.md); NULL or 0: byte-identical. The checker reports such differences as
+     * measured, not as failures. */
+    size_t (*documented_difference)(const struct retro_kernel *k, int mode, const struct retro_effects *fx,
+                                    size_t npx);
 } retro_family;
 
 typedef struct retro_kernel {

@@ -130,3 +130,81 @@ Test(mesh_family, scene_sections_turn_mesh_effects_on)
     cr_assert_eq(r, 0, "%s", err);
     cr_assert_eq(s.fx.flags, (unsigned)(RETRO_FX_TEXTURE | RETRO_FX_WIREFRAME | RETRO_FX_CULL));
 }
+
+/* The checker covers the family: mesh-painter at every ISA level against mesh-zbuffer on seeded
+ * random small maps and poses, every mode, random effects; with `cull` byte-identical, without
+ * it within the documented bound (measured and logged). */
+#include "check.h"
+
+typedef struct {
+    size_t ran, differ, documented_frames;
+} tally;
+
+static void count(void *user, const retro_check_variant *v, const retro_check_result *r)
+{
+    (void)v;
+    tally *t = user;
+    t->ran += (size_t)r->ran;
+    t->differ += r->differ;
+    t->documented_frames += r->differ > 0 && r->differ <= r->documented;
+}
+
+Test(mesh_family, checker_on_random_poses)
+{
+    retro_check chk;
+    cr_assert_eq(retro_check_init(&chk, &retro_family_mesh, NULL, 2), 0);
+    cr_assert(chk.n >= 1, "no mesh variant besides the reference");
+    for (int i = 0; i < chk.n; i++)
+        cr_assert(chk.v[i].kernel->family == &retro_family_mesh);
+    static const int sizes[] = {1, 2, 3, 7, 16, 33};
+    static const unsigned colour[] = {0, RETRO_FX_TEXTURE, RETRO_FX_GOURAUD};
+    uint64_t seed = 15;
+    tally t = {0, 0, 0};
+    int bad = 0;
+    size_t pixels = 0;
+    for (int n = 0; n < 18; n++) {
+        int S = sizes[n % 6];
+        mmap_t m = mmap_random(S, seed + (uint64_t)n, 0, 120);
+        uint8_t *h1 = malloc((size_t)S * (size_t)S);
+        for (int k = 0; k < S * S; k++)
+            h1[k] = (uint8_t)(255 - m.h[k]);
+        int W = 8 + (int)(mrng(&seed) % 56), H = 8 + (int)(mrng(&seed) % 40);
+        ctx_t c = {W, H, S, 10 + (int)(mrng(&seed) % 70), MSKY, m.h, m.c, NULL};
+        player_t p = {(float)(mrng(&seed) % 4000) / 37.0f, (float)(mrng(&seed) % 4000) / 41.0f,
+                      (int)(mrng(&seed) % 720) - 360, 60 + (int)(mrng(&seed) % 150), 0, 0, 0};
+        retro_effects fx;
+        retro_effects_defaults(&fx);
+        fx.flags = colour[mrng(&seed) % 3] | (n % 2 ? RETRO_FX_CULL : 0) | (mrng(&seed) % 2 ? RETRO_FX_FOG : 0) |
+                   (mrng(&seed) % 2 ? RETRO_FX_SHADE : 0) | (mrng(&seed) % 3 ? 0 : RETRO_FX_WIREFRAME) |
+                   (mrng(&seed) % 3 ? 0 : RETRO_FX_MORPH) | (mrng(&seed) % 3 ? 0 : RETRO_FX_HORIZON);
+        fx.morph_height = h1;
+        fx.morph_t = 0.6f;
+        fx.pitch = -20;
+        for (int mode = 0; mode < RETRO_MESH_MODE_COUNT; mode++) {
+            int before = bad;
+            cr_assert_eq(retro_check_frame(&chk, mode, &fx, &p, &c, count, &t, &bad), RETRO_OK);
+            cr_assert_eq(bad, before, "case %d mode %d: a variant differs beyond the documented bound", n, mode);
+            pixels += (size_t)W * (size_t)H * (size_t)chk.n;
+        }
+        free(h1);
+        mmap_free(&m);
+    }
+    cr_assert(t.ran > 0);
+    cr_log_info("mesh-painter without cull: %zu px differ in %zu (%zu frames)", t.differ, pixels,
+                t.documented_frames);
+    retro_check_free(&chk);
+}
+
+Test(mesh_family, documented_difference_only_without_cull)
+{
+    const retro_family *fam = &retro_family_mesh;
+    const retro_kernel *painter = retro_kernel_find("mesh-painter"), *z = retro_kernel_find("mesh-zbuffer");
+    retro_effects fx;
+    retro_effects_defaults(&fx);
+    cr_assert_eq(fam->documented_difference(painter, 0, NULL, 311040), 32u);
+    cr_assert_eq(fam->documented_difference(painter, 2, &fx, 1), 1u);
+    fx.flags = RETRO_FX_CULL;
+    cr_assert_eq(fam->documented_difference(painter, 0, &fx, 311040), 0u);
+    cr_assert_eq(fam->documented_difference(z, 0, NULL, 311040), 0u);
+    cr_assert_null(retro_family_voxel.documented_difference);
+}

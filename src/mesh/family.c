@@ -103,6 +103,17 @@ const char *retro_mesh_last_error(const retro_ctx *rc)
     return rc && rc->mesh && rc->mesh->status ? retro_mesh_error(rc->mesh->mc) : "";
 }
 
+/* Without culling a back face folds over its front neighbour along silhouettes at equal
+ * depth, and the painter's order and the z-buffer's rounded depths may pick different faces
+ * next to that edge: docs/MESH.md bounds it by 1 pixel in 10,000. */
+static size_t mesh_documented_difference(const retro_kernel *k, int mode, const retro_effects *fx, size_t npx)
+{
+    (void)mode;
+    if (k->fn != retro_kernel_mesh_painter || (fx && (fx->flags & RETRO_FX_CULL)))
+        return 0;
+    return (npx + 9999) / 10000;
+}
+
 const retro_family retro_family_mesh = {
     .name = "mesh",
     .reference = "mesh-zbuffer",
@@ -111,4 +122,5 @@ const retro_family retro_family_mesh = {
     .fx = RETRO_FX_MESH,
     .effective_mode = mesh_effective_mode,
     .setup = mesh_setup,
+    .documented_difference = mesh_documented_difference,
 };
