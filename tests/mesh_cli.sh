@@ -79,6 +79,7 @@ printf '[texture]\n' >>"$tmp/m.scene"
 expect_bad "texture and gouraud" "exclusive" render "$tmp/m.scene" -k mesh-zbuffer -o "$tmp/out.png"
 expect_bad "voxel kernel with a mesh effect" "kernel naive does not render texture" render "$tmp/m.scene" -k naive -o "$tmp/out.png"
 expect_bad "bad --time count" "frame count" render "$map" --time 0 -o "$tmp/out.png"
+expect_bad "verify the family's reference" "mesh family's reference" verify -k mesh-zbuffer
 
 [ $fails -eq 0 ] && echo "mesh_cli: all passed"
 exit $((fails > 0))

@@ -217,7 +217,11 @@ static int run_families(verify_run *v)
         const retro_family *fam = retro_families[f];
         if (only && only->family != fam)
             continue;
-        retro_check_init(&v->chk, fam, v->only, 3);
+        if (retro_check_init(&v->chk, fam, v->only, 3)) {
+            retro_check_free(&v->chk);
+            return cli_error("verify", "kernel '%s' is the %s family's reference: it is what the others are "
+                                       "compared with", v->only, fam->name);
+        }
         printf("%s# family %s: against %s\n%-22s %-8s", f ? "\n" : "", fam->name, fam->reference, "case", "mode");
         for (int k = 0; k < v->chk.n; k++)
             printf(" | %-*s", VERIFY_CELL_WIDTH, v->chk.v[k].label);
