@@ -16,6 +16,7 @@
 extern "C" {
 #include "hmax_pyramid.h"
 }
+#include "mesh_cases.h"
 #include "options.h"
 #include "peer_cases.h"
 #include "pin.h"
@@ -132,9 +133,11 @@ static void run_case(benchmark::State &st, const BenchCase *c)
     st.counters["ms/frame"] = Counter(1e-3, static_cast<Counter::Flags>(ms_flags));
     st.counters["Mpixel/s"] =
         Counter(c->W * static_cast<double>(c->H) / 1e6, Counter::kIsIterationInvariantRate);
-    // Nominal: the W x (D-1) samples of the reference; kernels that stop early take fewer.
-    st.counters["samples/s"] = Counter(c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 0),
-                                       Counter::kIsIterationInvariantRate);
+    if (c->groups & GROUP_MESH)
+        mesh_counters(&st, c, &live.rc);
+    else // nominal: the W x (D-1) samples of the reference; kernels that stop early take fewer
+        st.counters["samples/s"] = Counter(c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 0),
+                                           Counter::kIsIterationInvariantRate);
 }
 
 static int load_scenes(bench_scene *scenes, const Options &o, BenchPlan *plan)
@@ -202,11 +205,14 @@ int main(int argc, char **argv)
     if (!opt.no_extras && opt.scene.empty())
         plan_extras(&plan);
     plan_peer(&plan);
+    plan_mesh(&plan, quick);
     for (const auto &c : plan.cases) {
         auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
         b->Unit(benchmark::kMillisecond);
         if (c->kernel->flags & RETRO_KF_THREADED)
             b->UseRealTime(); // CPU time is this thread's alone and misses the workers
+        if (c->groups & GROUP_MESH)
+            b->Iterations(MESH_ITERATIONS)->Repetitions(quick ? MESH_QUICK_REPETITIONS : MESH_REPETITIONS);
     }
 
     context_publish(ctx);

@@ -2,6 +2,7 @@
 #include "bench_report.h"
 #include "busy.h"
 #include "extras.h"
+#include "mesh_cases.h"
 #include "peer_cases.h"
 
 #include <algorithm>
@@ -200,6 +201,7 @@ bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunCon
     }
     extras_tables(o, plan);
     peer_table(o, plan);
+    mesh_table(o, plan);
     std::map<std::string, std::string> skipped; // kernel -> first reason
     for (const auto &c : plan.cases)
         if (c->ran && !c->error.empty())

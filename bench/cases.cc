@@ -74,7 +74,8 @@ void plan_cases(BenchPlan *plan)
     for (retro_mode mode : plan->modes) {
         for (size_t i = 0; i < retro_kernel_count; i++) {
             const retro_kernel *k = &retro_kernels[i];
-            if (!retro_kernel_has_mode(k, mode))
+            // the matrix's modes are the voxel family's; mesh kernels get their own cases
+            if (k->family != &retro_family_voxel || !retro_kernel_has_mode(k, mode))
                 continue;
             for (int t : plan_thread_counts(k, plan->cores))
                 for (const bench_scene *s : plan->scenes)

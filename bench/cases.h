@@ -21,6 +21,7 @@ enum : unsigned {
     GROUP_SUBMISSION = 1u << 3, // extras.cc: the course painter and the submission
     GROUP_EFFECTS = 1u << 4,    // extras.cc: what each effect costs
     GROUP_PEER = 1u << 5,       // peer_cases.cc: the classic demo's algorithm, not a kernel
+    GROUP_MESH = 1u << 6,       // mesh_cases.cc: the mesh family's kernels, mode binary32
 };
 
 struct BenchCase {
@@ -45,6 +46,10 @@ struct BenchCase {
     double samples = std::numeric_limits<double>::quiet_NaN();   // evaluated per frame (counted)
     double cv = std::numeric_limits<double>::quiet_NaN();        // spread over repetitions
     std::string error;           // non-empty when the case was skipped
+    // Mesh cases: the frame's counts (retro_mesh_stats), the same every frame of the case.
+    mutable double tri_submitted = std::numeric_limits<double>::quiet_NaN();
+    mutable double tri_drawn = std::numeric_limits<double>::quiet_NaN(); // after culling and clipping
+    mutable double fragments = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BenchPlan {

@@ -42,7 +42,7 @@ static const EffectSet effect_sets[] = {
     {"horizon", RETRO_FX_HORIZON},
     {"morph", RETRO_FX_MORPH},
     {"water + fog (islands.scene)", RETRO_FX_WATER | RETRO_FX_FOG},
-    {"all seven", RETRO_FX_ALL},
+    {"all seven", RETRO_FX_VOXEL},
 };
 static const int n_sets = sizeof effect_sets / sizeof effect_sets[0];
 static retro_effects effects[n_sets];

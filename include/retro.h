@@ -18,6 +18,8 @@
 extern "C" {
 #endif
 
+typedef struct retro_mesh_state retro_mesh_state;
+
 typedef enum {
     RETRO_MODE_EXACT = 0,  /* the specification done right, binary32 */
     RETRO_MODE_COURSE = 1, /* bit-compatible with the course's reference images */
@@ -143,6 +145,11 @@ typedef struct retro_ctx {
      * group of adjacent columns (docs/SKIPPING.md). Exact, but not yet faster than their plain
      * loop where measured, so off by default; the scalar strips always skip unless no_skip. */
     int simd_skip;
+    /* The mesh family's state (src/mesh/family.c): the module's context, the frame's inputs,
+     * the last frame's counts; NULL until a mesh frame is set up. */
+    struct retro_mesh_state *mesh;
+    /* Set by a kernel that fails after setup (out of memory); retro_render returns it. */
+    retro_err kernel_err;
 } retro_ctx;
 
 void retro_ctx_init(retro_ctx *rc);
@@ -178,6 +185,8 @@ enum {
 
 /* A family of kernels: kernels that render the same frames from the same frame constants and
  * are checked against one reference kernel. voxel is the first (src/voxel/family.c). */
+struct retro_kernel;
+
 typedef struct retro_family {
     const char *name;                /* "voxel": `retro kernels` groups by it */
     const char *reference;           /* the kernel every other kernel of the family must equal */
@@ -190,6 +199,12 @@ typedef struct retro_family {
     /* Validates the inputs for mode and builds the frame constants in rc; *frame is what the
      * family's kernels receive. */
     retro_err (*setup)(retro_ctx *rc, int mode, const player_t *p, const ctx_t *c, const void **frame);
+    /* The pixels (of npx) kernel k may differ from the reference by in mode with the effects
+     * fx, as the family's documentation explains and bounds (mesh-painter without culling,
+     * docs/MESH.md); NULL or 0: byte-identical. The checker reports such differences as
+     * measured, not as failures. */
+    size_t (*documented_difference)(const struct retro_kernel *k, int mode, const struct retro_effects *fx,
+                                    size_t npx);
 } retro_family;
 
 typedef struct retro_kernel {
@@ -210,6 +225,7 @@ extern const size_t retro_kernel_count;
 extern const retro_family *const retro_families[];
 extern const size_t retro_family_count;
 extern const retro_family retro_family_voxel;
+extern const retro_family retro_family_mesh; /* include/retro_mesh.h, docs/MESH.md */
 
 const retro_kernel *retro_kernel_find(const char *name);
 const retro_family *retro_family_find(const char *name);
@@ -223,6 +239,9 @@ const char *retro_fx_name(unsigned bit);
 /* The fastest voxel kernel this CPU runs for mode (the last capable row of the table). */
 const retro_kernel *retro_kernel_best(retro_mode mode);
 /* The same among kernels that render the effects of fx (NULL: none). */
+/* The fastest kernel of family fam this CPU runs for mode and the effects fx (NULL: none): the
+ * last capable row of the table, which lists each family slowest first. */
+const retro_kernel *retro_family_best(const retro_family *fam, int mode, const struct retro_effects *fx);
 const retro_kernel *retro_kernel_best_fx(retro_mode mode, const struct retro_effects *fx);
 int retro_kernel_runs_here(const retro_kernel *k);
 int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode);

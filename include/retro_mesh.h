@@ -42,12 +42,13 @@ typedef enum {
     RETRO_MESH_KERNEL_COUNT
 } retro_mesh_kernel;
 
-/* Mesh-only effects (bits above retro_scene.h's RETRO_FX_*, free to merge into that enum). */
+/* Mesh-only effects: the scene effects of retro_scene.h, and the switch that turns culling
+ * off (the family's kernels set it when the scene does not ask for `cull`). */
 enum {
-    RETRO_MESH_FX_TEXTURE = 1u << 8,   /* colour map as a texture, bilinear between vertices */
-    RETRO_MESH_FX_GOURAUD = 1u << 9,   /* vertex colours interpolated */
-    RETRO_MESH_FX_WIREFRAME = 1u << 10, /* only the pixels along triangle edges */
-    RETRO_MESH_FX_NOCULL = 1u << 11,   /* back faces drawn too (the `cull` switch off) */
+    RETRO_MESH_FX_TEXTURE = RETRO_FX_TEXTURE,     /* colour map as a texture, bilinear between vertices */
+    RETRO_MESH_FX_GOURAUD = RETRO_FX_GOURAUD,     /* vertex colours interpolated */
+    RETRO_MESH_FX_WIREFRAME = RETRO_FX_WIREFRAME, /* only the pixels along triangle edges */
+    RETRO_MESH_FX_NOCULL = 1u << 11,              /* back faces drawn too (the `cull` effect off) */
     RETRO_MESH_FX_ALL = RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD | RETRO_MESH_FX_WIREFRAME |
                         RETRO_MESH_FX_NOCULL
 };
@@ -84,6 +85,12 @@ typedef enum {
 retro_mesh_err retro_mesh_render(retro_mesh_ctx *mc, retro_mesh_kernel kernel, retro_mesh_mode mode,
                                  const player_t *p, const ctx_t *c, const retro_effects *fx,
                                  const retro_mesh_opts *opts, retro_mesh_stats *stats);
+
+/* Through the kernel table (retro_render with a mesh-* kernel): the counts of the context's last
+ * mesh frame (NULL before one), and its error message ("" after success). */
+struct retro_ctx;
+const retro_mesh_stats *retro_mesh_last_stats(const struct retro_ctx *rc);
+const char *retro_mesh_last_error(const struct retro_ctx *rc);
 
 /* One line describing the last error of mc ("" after success), naming the refused effect. */
 const char *retro_mesh_error(const retro_mesh_ctx *mc);

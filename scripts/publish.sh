@@ -28,7 +28,8 @@ for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distan
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
 if [ -f "$runs/ACCURACY.md" ]; then
-  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png; do
+  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
+    accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
     [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
   done
 fi

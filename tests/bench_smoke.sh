@@ -62,5 +62,28 @@ check "$tmp/ns.json" "\"name\": \"$yb\"" "--no-skip lost the skipping case"
 check "$tmp/ns.json" '"evaluated/frame"' "no evaluated/frame counter"
 check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipping in BENCH.md"
 check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
-[ "$fail" = 0 ] && echo "ok: retro-bench timed $case"
+
+# A mesh row beside a voxel one, at a distance where the flat map is in view: its counters in
+# the JSON and its row in BENCH.md's mesh table (counts are exact, times are not checked).
+mcase=binary32/flat-64/mesh-zbuffer/1t/32x24/D200
+mkdir "$tmp/mesh"
+if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=200 \
+  --benchmark_filter="^($mcase/.*|exact/flat-64/ybuffer/1t/32x24/D200)\$" --benchmark_repetitions=1 \
+  --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 --report="$tmp/mesh" \
+  --benchmark_out="$tmp/mesh/bench.json" --benchmark_out_format=json >"$tmp/mesh/out" 2>&1; then
+  echo "FAIL: retro-bench exited with an error on the mesh case:"
+  cat "$tmp/mesh/out"
+  exit 1
+fi
+# (its name carries the fixed iterations and repetitions: .../iterations:2/repeats:3)
+check "$tmp/mesh/bench.json" "\"run_name\": \"$mcase/" "the mesh case is not in the JSON"
+for counter in tri_submitted tri_drawn fragments triangles/s fragments/s; do
+  check "$tmp/mesh/bench.json" "\"$counter\"" "no $counter counter on the mesh case"
+done
+check "$tmp/mesh/BENCH.md" '^### Mesh family: the same scenes and poses as triangles' "no mesh table in BENCH.md"
+check "$tmp/mesh/BENCH.md" '^| flat-64 | `mesh-zbuffer` | [0-9.]* | [1-9][0-9]* | [1-9][0-9]* | [1-9][0-9]* | .* | [0-9]*× `ybuffer`/1t |' \
+  "no mesh row with counts and a ratio to the voxel kernel in BENCH.md"
+python3 scripts/bench-csv.py "$tmp/mesh/bench.json" >"$tmp/mesh/bench.csv" 2>&1
+check "$tmp/mesh/bench.csv" "^$mcase[^,]*,binary32,flat-64,mesh-zbuffer,1,32x24,200," "make bench-csv's converter lost the mesh case"
+[ "$fail" = 0 ] && echo "ok: retro-bench timed $case and $mcase"
 exit "$fail"

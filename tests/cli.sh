@@ -64,6 +64,15 @@ exact_err=$(awk -F'|' '/^\| variant/ { for (i = 1; i <= NF; i++) if ($i ~ /pixel
   col && $2 ~ /^ exact / { gsub(/[ %]/, "", $col); print $col }' "$tmp/acc.md")
 awk -v e="$exact_err" 'BEGIN { exit !(e != "" && e + 0 < 1) }' ||
   { echo "FAIL: retro accuracy: exact differs from truth in $exact_err% of pixels"; fails=$((fails + 1)); }
+# Across families: every voxel variant and mesh mode against the mesh in binary64, whose own row
+# is exactly 0; its chart beside the first, the picture pair beside the table.
+[ "$(grep -c '^| voxel | ' "$tmp/acc.md")" -ge 8 ] && [ "$(grep -c '^| mesh | mesh ' "$tmp/acc.md")" -eq 3 ] &&
+  grep -q '^| mesh | mesh binary64 | .* | 0\.000% | 0\.00% | 0\.000 | 0 | ∞ |$' "$tmp/acc.md" &&
+  grep -q '<svg' "$tmp/accuracy-families.svg" ||
+  { echo "FAIL: retro accuracy: no families table or chart"; fails=$((fails + 1)); }
+for f in voxel mesh diff; do
+  [ -s "$tmp/accuracy-pair-$f.png" ] || { echo "FAIL: retro accuracy: no accuracy-pair-$f.png"; fails=$((fails + 1)); }
+done
 expect_bad "unknown render mode" render $map -m approximate -o "$tmp/out.png"
 expect_bad "bad lod" render $map -m lod --lod -1 -o "$tmp/out.png"
 echo "cli: $fails failures"

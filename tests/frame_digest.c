@@ -142,7 +142,7 @@ int main(int argc, char **argv)
             all_variants(name, mode, NULL, &p, &c);
         retro_effects fx;
         retro_effects_defaults(&fx);
-        fx.flags = (unsigned)rnd(1, RETRO_FX_ALL);
+        fx.flags = (unsigned)rnd(1, RETRO_FX_VOXEL);
         fx.fog_exp = rnd(0, 1);
         fx.pitch = rnd(-100, 100);
         fx.lod = 0.01f * (float)rnd(1, 8);

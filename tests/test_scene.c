@@ -151,7 +151,7 @@ Test(scene, every_section)
     EQF(s.keys[2].morph_t, 1);
 
     const retro_effects *fx = &s.fx;
-    cr_assert_eq(fx->flags, (unsigned)RETRO_FX_ALL);
+    cr_assert_eq(fx->flags, (unsigned)RETRO_FX_VOXEL);
     cr_assert_eq(fx->fog_exp, 1);
     EQF(fx->fog_start, 100);
     EQF(fx->fog_end, 900);

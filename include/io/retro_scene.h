@@ -20,7 +20,16 @@ enum {
     RETRO_FX_LOD = 1u << 4,      /* distance step growing with distance (mode lod) */
     RETRO_FX_HORIZON = 1u << 5,  /* pitch as a horizon offset (a frame constant) */
     RETRO_FX_MORPH = 1u << 6,    /* blend between two height keyframes (baked per time t) */
-    RETRO_FX_ALL = (1u << 7) - 1
+    /* mesh-only effects (docs/MESH.md): the voxel family refuses them */
+    RETRO_FX_TEXTURE = 1u << 7,   /* colour map as a texture, bilinear between vertices */
+    RETRO_FX_GOURAUD = 1u << 8,   /* vertex colours interpolated */
+    RETRO_FX_WIREFRAME = 1u << 9, /* only the pixels along triangle edges */
+    RETRO_FX_CULL = 1u << 10,     /* back faces culled (without it both sides are drawn) */
+    RETRO_FX_VOXEL = (1u << 7) - 1, /* the voxel family's effects */
+    RETRO_FX_MESH_ONLY = RETRO_FX_TEXTURE | RETRO_FX_GOURAUD | RETRO_FX_WIREFRAME | RETRO_FX_CULL,
+    RETRO_FX_MESH = RETRO_FX_FOG | RETRO_FX_SHADE | RETRO_FX_WATER | RETRO_FX_HORIZON | RETRO_FX_MORPH |
+                    RETRO_FX_MESH_ONLY, /* the mesh family's effects */
+    RETRO_FX_ALL = (1u << 11) - 1
 };
 /* Effects that need code in a kernel's inner loop; the others change only frame constants or
  * the maps the frame reads, so every kernel renders them. */

@@ -30,6 +30,8 @@ typedef struct retro_check_result {
     int ran;         /* 0: the variant cannot render this mode or these effects (not an error) */
     retro_err err;   /* the library's status when it ran */
     size_t differ;   /* pixels that differ from the reference */
+    size_t documented; /* differing pixels the family documents and bounds for this variant
+                        * (retro_family.documented_difference): up to that many is no failure */
     int u, r;        /* first differing pixel: column 1..W, row 1..H from the bottom */
     uint32_t got, want;
 } retro_check_result;
@@ -60,7 +62,7 @@ typedef void (*retro_check_report)(void *user, const retro_check_variant *v, con
 /* Renders (mode, fx, p, c) with the reference into chk->ref, then every variant into chk->out,
  * comparing each; c->out is ignored. Returns the reference's status (a reference that leaves a
  * pixel unwritten is RETRO_EINVAL, its variants then not run) and adds the number of
- * variants that failed or differ to *bad. */
+ * variants that failed or differ by more than their family documents to *bad. */
 retro_err retro_check_frame(retro_check *chk, int mode, const struct retro_effects *fx, const player_t *p,
                             const ctx_t *c, retro_check_report report, void *user, int *bad);
 

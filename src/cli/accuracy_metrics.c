@@ -101,17 +101,28 @@ int acc_path_ok(const char *path)
 
 /* One gnuplot run for one terminal, the data inline, so nothing but the chart is written. The
  * key sits below the plot: inside it, it covered the cheapest variants' points. */
-static int plot(const char *term, const char *out, const acc_row *rows, int n)
+static int plot(const char *term, const char *out, const acc_row *rows, int n, int families)
 {
     FILE *g = popen("gnuplot 2>/dev/null", "w");
     if (!g)
         return -1;
     fprintf(g, "$d << EOD\n");
     for (int i = 0; i < n; i++) /* error axis is logarithmic: truth (0) sits at its floor */
-        fprintf(g, "\"%s\" %.4f %.6f %.4f\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
-                rows[i].ms_y);
+        fprintf(g, "\"%s\" %.4f %.6f %.4f %d\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
+                rows[i].ms_y, rows[i].family && !strcmp(rows[i].family, "mesh"));
     fprintf(g, "EOD\nset terminal %s size 800,560 background rgb '#ffffff'\nset output ", term);
     put_gnuplot_string(g, out);
+    if (families) {
+        fprintf(g, "\nset title 'Across families: time per frame against error (vs the mesh in binary64)'\n"
+                   "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
+                   "set ylabel 'pixels differing from the mesh in binary64 (%%, log; itself at 0.001)'\n"
+                   "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key below horizontal\n"
+                   "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
+                   "plot $d using 2:($5 == 0 ? $3 : 1/0) with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'voxel', "
+                   "$d using 2:($5 == 1 ? $3 : 1/0) with points pt 9 ps 1.4 lc rgb '#2ca02c' title 'mesh', "
+                   "$d using 2:3:1 with labels offset 1,0.8 left notitle\n");
+        return pclose(g) == 0 ? 0 : -1;
+    }
     fprintf(g, "\nset title 'What accuracy costs: time per frame against error (vs truth)'\n"
                "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
                "set ylabel 'pixels differing from truth (%%, log; truth itself plotted at 0.001)'\n"
@@ -124,9 +135,9 @@ static int plot(const char *term, const char *out, const acc_row *rows, int n)
 }
 
 /* The SVG, and a PNG beside it (OUT.png for OUT.svg) where this gnuplot has a PNG terminal. */
-static int write_chart(const char *svg, const acc_row *rows, int n, char *err, size_t errlen)
+static int write_chart(const char *svg, const acc_row *rows, int n, int families, char *err, size_t errlen)
 {
-    if (plot("svg dynamic", svg, rows, n)) {
+    if (plot("svg dynamic", svg, rows, n, families)) {
         snprintf(err, errlen, "gnuplot failed on %s (is gnuplot-nox installed?)", svg);
         return -1;
     }
@@ -135,15 +146,57 @@ static int write_chart(const char *svg, const acc_row *rows, int n, char *err, s
     if (len < 4 || strcmp(svg + len - 4, ".svg") || len >= sizeof png)
         return 0;
     snprintf(png, sizeof png, "%.*s.png", (int)(len - 4), svg);
-    if (plot("pngcairo", png, rows, n) && plot("png", png, rows, n))
+    if (plot("pngcairo", png, rows, n, families) && plot("png", png, rows, n, families))
         remove(png); /* gnuplot-nox builds differ: SVG only */
     return 0;
 }
 
-int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
-                     uint64_t seed, char *err, size_t errlen)
+static const char *base(const char *path)
 {
-    if (write_chart(svg, rows, n, err, errlen))
+    const char *slash = strrchr(path, '/'); /* charts and pictures are linked as they sit beside the table */
+    return slash ? slash + 1 : path;
+}
+
+static void psnr_text(double psnr, char *buf, size_t n)
+{
+    if (isinf(psnr))
+        snprintf(buf, n, "∞");
+    else
+        snprintf(buf, n, "%.1f", psnr);
+}
+
+static void write_families(FILE *f, const acc_families *fam)
+{
+    fprintf(f, "\n## Across families: against the mesh in binary64\n\nThe same terrain as a continuous "
+               "surface: the mesh family (docs/MESH.md) in binary64, back faces culled, is the common "
+               "reference for both families. %d poses (the first of each scene's), 640x480, D 800; "
+               "voxel times are the medians of the table above, mesh times the median of %d frames per "
+               "pose after one untimed frame, with the fastest mesh kernel for the mode.\n\n",
+            fam->poses, 3);
+    fprintf(f, "| family | variant | what | fastest kernel | ms/frame | vs voxel exact | pixels differ | "
+               "silhouette columns differ | mean silhouette error (rows) | max silhouette error | PSNR (dB) |\n"
+               "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (int i = 0; i < fam->n; i++) {
+        const acc_row *r = &fam->rows[i];
+        char psnr[32];
+        psnr_text(r->psnr, psnr, sizeof psnr);
+        fprintf(f, "| %s | %s | %s | %s | %.3f | %.2f× | %.3f%% | %.2f%% | %.3f | %d | %s |\n", r->family, r->label,
+                r->what, r->kernel, r->ms, r->speedup, r->pixel_pct, r->col_pct, r->sil_mean, r->sil_max, psnr);
+    }
+    fprintf(f, "\n![time against error across families](%s)\n", base(fam->svg));
+    if (fam->pair)
+        fprintf(f, "\nOne pose, both families: voxel (mode exact) | mesh (binary64) | difference "
+                   "(|voxel − mesh| per channel ×4, black where equal)\n\n"
+                   "![voxel](%s-voxel.png) ![mesh](%s-mesh.png) ![difference](%s-diff.png)\n",
+                base(fam->pair), base(fam->pair), base(fam->pair));
+}
+
+int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
+                     uint64_t seed, const acc_families *fam, char *err, size_t errlen)
+{
+    if (write_chart(svg, rows, n, 0, err, errlen))
+        return -1;
+    if (fam && write_chart(fam->svg, fam->rows, fam->n, 1, err, errlen))
         return -1;
     char tmp[ACC_PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", md);
@@ -167,16 +220,14 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
                "error | PSNR (dB) |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int i = 0; i < n; i++) {
         char psnr[32];
-        if (isinf(rows[i].psnr))
-            snprintf(psnr, sizeof psnr, "∞");
-        else
-            snprintf(psnr, sizeof psnr, "%.1f", rows[i].psnr);
+        psnr_text(rows[i].psnr, psnr, sizeof psnr);
         fprintf(f, "| %s | %s | %s | %.3f | %.2f× | %.3f | %.2f× | %.3f%% | %.2f%% | %.3f | %d | %s |\n",
                 rows[i].label, rows[i].what, rows[i].kernel, rows[i].ms, rows[i].speedup, rows[i].ms_y,
                 rows[i].speedup_y, rows[i].pixel_pct, rows[i].col_pct, rows[i].sil_mean, rows[i].sil_max, psnr);
     }
-    const char *slash = strrchr(svg, '/'); /* the chart is linked as it sits beside the table */
-    fprintf(f, "\n![time against error](%s)\n", slash ? slash + 1 : svg);
+    fprintf(f, "\n![time against error](%s)\n", base(svg));
+    if (fam)
+        write_families(f, fam);
     if (fclose(f) || rename(tmp, md)) {
         snprintf(err, errlen, "%s: cannot write", md);
         return -1;

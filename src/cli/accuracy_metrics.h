@@ -19,6 +19,7 @@ typedef struct {
 } acc_stats;
 
 typedef struct {
+    const char *family;        /* "voxel" or "mesh" (the families table) */
     const char *label, *what, *kernel;
     double ms, speedup;        /* the fastest kernel for the variant's mode */
     double ms_y, speedup_y;    /* ybuffer, the same scalar kernel for every variant */
@@ -34,14 +35,24 @@ double acc_rand(uint64_t *state);
 void acc_pose(uint64_t *rng, int S, const uint8_t *height, player_t *p);
 void acc_compare(acc_stats *s, const uint32_t *truth, const uint32_t *img, int W, int H, uint32_t sky);
 void acc_summary(const acc_stats *s, acc_row *row);
-/* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot). */
 /* Longest report or chart path accepted, so derived names (.tmp, .png) always fit. */
 #define ACC_PATH_MAX 4000
 /* 1 when path may name a report or chart: not empty, shorter than ACC_PATH_MAX, and free of
  * control characters (gnuplot reads it inside its script). */
 int acc_path_ok(const char *path);
 
+/* The families table (docs/ACCURACY.md, "Across families"): every row against the mesh in
+ * binary64, over fam_poses poses, and its chart. */
+typedef struct {
+    const acc_row *rows;
+    int n, poses;
+    const char *svg;
+    const char *pair; /* the picture pair's prefix beside the table, or NULL */
+} acc_families;
+
+/* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot), then the
+ * families table and its chart when fam is not NULL. */
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
-                     uint64_t seed, char *err, size_t errlen);
+                     uint64_t seed, const acc_families *fam, char *err, size_t errlen);
 
 #endif

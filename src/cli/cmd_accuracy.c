@@ -7,6 +7,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "accuracy_mesh.h"
 #include "accuracy_metrics.h"
 #include "cli.h"
 #include "maps_dir.h"
@@ -26,6 +27,7 @@ typedef struct {
     int peer; /* the classic demo's traversal (src/peer/), not a retro kernel */
     const char *what;
     acc_stats stats;
+    acc_stats fam;  /* against the mesh in binary64, on the poses the mesh renders */
     double *ms;   /* per pose, fastest kernel for the mode */
     double *ms_y; /* per pose, ybuffer: the same scalar kernel for every variant */
     int n;
@@ -85,14 +87,20 @@ static double time_variant(retro_ctx *rc, const retro_kernel *k, variant *v, con
 
 static void help(void)
 {
-    printf("usage: retro accuracy [--poses N] [--seed S] [-o OUT.md] [--chart OUT.svg] [--maps DIR]\n\n"
+    printf("usage: retro accuracy [--poses N] [--mesh-poses M] [--seed S] [-o OUT.md] [--chart OUT.svg]\n"
+           "                      [--maps DIR]\n\n"
            "Renders N seeded random poses (default 20) of each default scene (maps/) and course\n"
            "scene ($RETRO_SHARED/course) at 640x480, D 800, with every accuracy variant through\n"
            "the fastest kernel for its mode, and the classic demo's algorithm as a peer (its own\n"
            "code, src/peer/), compares each frame with mode truth and writes a table\n"
            "(default ./ACCURACY.md) and a Pareto chart (default ./accuracy-pareto.svg, and a .png\n"
            "beside it). make accuracy writes them to build/results/.\n"
+           "Across families: the first M poses of each scene are also rendered by the mesh family\n"
+           "in every mode; every variant of both families is measured against the mesh in binary64\n"
+           "in a second table and chart (accuracy-families.svg/.png beside the first), and a\n"
+           "picture pair (accuracy-pair-voxel.png, -mesh.png, -diff.png) goes beside the table.\n"
            "  --poses N      poses per scene (default 20)\n"
+           "  --mesh-poses M poses per scene the mesh renders, 0 for none (default 2, at most N)\n"
            "  --seed S       seed of the poses (default 1)\n"
            "  -o OUT.md      the table\n"
            "  --chart OUT.svg  the chart (OUT.png beside it where gnuplot has a PNG terminal)\n"
@@ -102,7 +110,7 @@ static void help(void)
 
 int cmd_accuracy(int argc, char **argv)
 {
-    long poses = 20;
+    long poses = 20, mesh_poses = 2;
     uint64_t seed = 1;
     const char *out_md = "ACCURACY.md", *out_svg = "accuracy-pareto.svg", *maps_given = NULL;
     for (int i = 1; i < argc; i++) {
@@ -116,6 +124,9 @@ int cmd_accuracy(int argc, char **argv)
         if (!strcmp(a, "--poses")) {
             if (cli_int(val, 1, MAX_POSES, &poses))
                 return cli_error("accuracy", "bad pose count '%s' (1..%d)", val, MAX_POSES);
+        } else if (!strcmp(a, "--mesh-poses")) {
+            if (cli_int(val, 0, MAX_POSES, &mesh_poses))
+                return cli_error("accuracy", "bad mesh pose count '%s' (0..%d)", val, MAX_POSES);
         } else if (!strcmp(a, "--seed")) {
             if (cli_u64(val, &seed))
                 return cli_error("accuracy", "bad seed '%s'", val);
@@ -153,6 +164,12 @@ int cmd_accuracy(int argc, char **argv)
     for (int i = 0; i < 3; i++)
         snprintf(scenes[ns++], sizeof scenes[0], "%s/course/%s", shared, (const char *[]){"valley", "island", "pyramids"}[i]);
 
+    /* The families chart beside the first chart, the picture pair beside the table. */
+    char fam_svg[1100], pair_dir[1100], pair_prefix[1200];
+    const char *cs = strrchr(out_svg, '/'), *ms = strrchr(out_md, '/');
+    snprintf(fam_svg, sizeof fam_svg, "%.*saccuracy-families.svg", cs ? (int)(cs - out_svg + 1) : 0, out_svg);
+    snprintf(pair_dir, sizeof pair_dir, "%.*s", ms ? (int)(ms - out_md) : 1, ms ? out_md : ".");
+    snprintf(pair_prefix, sizeof pair_prefix, "%s/accuracy-pair", pair_dir);
     uint32_t *truth = malloc(sizeof(uint32_t) * W * H), *img = malloc(sizeof(uint32_t) * W * H);
     uint32_t *small = malloc(sizeof(uint32_t) * W * H);
     const retro_kernel *ybuffer = retro_kernel_find("ybuffer");
@@ -160,6 +177,10 @@ int cmd_accuracy(int argc, char **argv)
         vars[k].ms = malloc(sizeof(double) * (size_t)poses * (size_t)ns);
         vars[k].ms_y = malloc(sizeof(double) * (size_t)poses * (size_t)ns);
     }
+    mesh_poses = mesh_poses < poses ? mesh_poses : poses;
+    acc_mesh am;
+    if (acc_mesh_init(&am, (int)mesh_poses * ns, W, H))
+        return cli_error("accuracy", "out of memory");
     retro_ctx rc;
     retro_ctx_init(&rc);
     int total = 0, status = 0;
@@ -181,6 +202,11 @@ int cmd_accuracy(int argc, char **argv)
         for (int n = 0; n < poses; n++) {
             player_t p;
             acc_pose(&rng, m.size, m.height, &p);
+            int mesh = n < mesh_poses;
+            if (mesh) {
+                ctx_t c = {W, H, m.size, D, SKY, m.height, m.color, NULL};
+                acc_mesh_pose(&am, &c, &p);
+            }
             for (int k = 0; k < nv; k++) {
                 vars[k].ms_y[vars[k].n] = time_variant(&rc, ybuffer, &vars[k], &m, &p, img, small);
                 vars[k].ms[vars[k].n++] = time_variant(&rc, retro_kernel_best(vars[k].mode), &vars[k], &m, &p,
@@ -188,9 +214,13 @@ int cmd_accuracy(int argc, char **argv)
                 if (k == 0)
                     memcpy(truth, img, sizeof(uint32_t) * W * H);
                 acc_compare(&vars[k].stats, truth, img, W, H, SKY);
+                if (mesh)
+                    acc_compare(&vars[k].fam, am.ref, img, W, H, SKY);
             }
             total++;
         }
+        if (s == 0 && mesh_poses > 0 && acc_write_pair(pair_dir, &m, W, H, D, 0x66a3ff00u, err, sizeof err))
+            status = cli_error("accuracy", "%s", err);
         retro_map_free(&m);
     }
     if (!status) {
@@ -203,7 +233,7 @@ int cmd_accuracy(int argc, char **argv)
                 exact_y = vars[k].ms_y[vars[k].n / 2];
             }
         }
-        acc_row rows[16];
+        acc_row rows[16], fam_rows[16];
         for (int k = 0; k < nv; k++) {
             rows[k].label = vars[k].label;
             rows[k].what = vars[k].what;
@@ -213,8 +243,13 @@ int cmd_accuracy(int argc, char **argv)
             rows[k].ms_y = vars[k].ms_y[vars[k].n / 2];
             rows[k].speedup_y = exact_y / rows[k].ms_y;
             acc_summary(&vars[k].stats, &rows[k]);
+            rows[k].family = "voxel";
+            fam_rows[k] = rows[k];
+            acc_summary(&vars[k].fam, &fam_rows[k]);
         }
-        if (acc_write_report(out_md, out_svg, rows, nv, total, seed, err, sizeof err))
+        acc_mesh_rows(&am, fam_rows + nv, exact_ms);
+        acc_families fam = {fam_rows, nv + ACC_MESH_MODES, am.n, fam_svg, pair_prefix};
+        if (acc_write_report(out_md, out_svg, rows, nv, total, seed, am.n ? &fam : NULL, err, sizeof err))
             status = cli_error("accuracy", "%s", err);
         else
             printf("accuracy: %d poses; wrote %s and %s\n", total, out_md, out_svg);
@@ -224,6 +259,7 @@ int cmd_accuracy(int argc, char **argv)
         free(vars[k].ms_y);
     }
     retro_ctx_free(&rc);
+    acc_mesh_free(&am);
     free(truth);
     free(img);
     free(small);

@@ -3,10 +3,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "hmax_pyramid.h"
 #include "kernels.h"
+#include "retro_mesh.h"
 #include "scene_args.h"
 
 static void help(void)
@@ -14,15 +16,18 @@ static void help(void)
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
            "                        [--threads N] [--lod L] [--no-skip] [--simd-skip] [--stats]\n"
+           "                        [--time [N]]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "SCENE is a file ending in .scene (README, Scenes): its map, camera, screen, sky and\n"
            "effects replace the defaults below, and the options given override the file. A scene\n"
            "with a path but no camera renders the path's first frame (retro fly renders them all).\n"
-           "  -k KERNEL   kernel (default: the fastest this CPU runs for the mode; retro kernels)\n"
-           "  -m MODE     exact (default), course (bit-compatible with the course), or an accuracy\n"
-           "              variant: truth (binary64), fixed (integer inner loop), lod (docs/ACCURACY.md);\n"
-           "              a scene with [lod] defaults to lod\n"
+           "  -k KERNEL   kernel of either family (default: the fastest this CPU runs for the mode;\n"
+           "              retro kernels lists them; mesh-zbuffer and mesh-painter draw triangles)\n"
+           "  -m MODE     voxel: exact (default), course (bit-compatible with the course), or an\n"
+           "              accuracy variant: truth (binary64), fixed (integer inner loop), lod\n"
+           "              (docs/ACCURACY.md); a scene with [lod] defaults to lod.\n"
+           "              mesh: binary32 (default), binary64, int (docs/MESH.md)\n"
            "  --lod L     mode lod's step growth: step = max(1, floor(d * L)) (default 0.02)\n"
            "  -s WxH      screen size (default 640x480)\n"
            "  -d D        distance %d..%d: samples at d = 1..D-1, D = 1 is sky only (default\n"
@@ -37,9 +42,13 @@ static void help(void)
            "              image is the same, only slower\n"
            "  --simd-skip the SIMD strips (and omp, pthreads) skip too, per group of columns;\n"
            "              exact, off by default: not yet faster where measured\n"
-           "  --stats     also print the samples the ybuffer kernel evaluates and those that\n"
-           "              paint, and their share of the frame's samples (W x (D-1)); and\n"
-           "              simd-avx512's, where it runs\n"
+           "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
+           "              paint, and their share of the frame's samples (W x (D-1)), and\n"
+           "              simd-avx512's where it runs; mesh: the triangles submitted, after\n"
+           "              culling, after clipping, and the fragments\n"
+           "  --time [N]  render N frames (default 50) after one untimed frame and print the\n"
+           "              kernel used, the mode, the median and the minimum ms per frame;\n"
+           "              -o is then optional (the last frame is written)\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n"
            "A render that would take more than a few seconds (the naive reference at a large\n"
            "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
@@ -55,10 +64,65 @@ static int render_extra(void *user, const char *a, const char *v)
     return 1;
 }
 
+/* The mesh frame's counts, kept by the family from the frame just rendered. */
+static int print_mesh_stats(const render_job *j)
+{
+    const retro_mesh_stats *s = retro_mesh_last_stats(&j->rc);
+    if (!s)
+        return cli_error("render", "no mesh frame was rendered");
+    uint64_t front = s->submitted - s->culled;
+    printf("triangles submitted: %" PRIu64 "\n", s->submitted);
+    printf("after culling: %" PRIu64 " (%" PRIu64 " back faces)\n", front, s->culled);
+    printf("after clipping: %" PRIu64 " (%" PRIu64 " entirely outside), %" PRIu64 " sub-triangles rasterized\n",
+           front - s->clipped_out, s->clipped_out, s->rasterized);
+    printf("fragments: %" PRIu64 " (%" PRIu64 " written)\n", s->fragments, s->written);
+    return 0;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+/* One untimed frame, then n timed ones; prints what ran and the median and minimum. */
+static int time_frames(render_job *j, const player_t *p, long n)
+{
+    double *ms = malloc((size_t)n * sizeof *ms);
+    if (!ms)
+        return cli_error("render", "out of memory");
+    retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+    for (long i = 0; !e && i < n; i++) {
+        double t0 = now_ms();
+        e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+        ms[i] = now_ms() - t0;
+    }
+    if (e) {
+        free(ms);
+        return job_error("render", j, e);
+    }
+    qsort(ms, (size_t)n, sizeof *ms, cmp_double);
+    double med = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    printf("kernel %s (family %s), mode %s, %dx%d, D %d: median %.3f ms, min %.3f ms per frame over %ld frames\n",
+           j->k->name, j->k->family->name, job_mode_name(j), j->c.scr_width, j->c.scr_height, j->c.distance, med,
+           ms[0], n);
+    free(ms);
+    return 0;
+}
+
 /* The frame rendered again by the counting build of ybuffer (the same bytes, into the same
  * buffer), and its counts. Returns 0 or CLI_EBADINPUT. */
 static int print_stats(render_job *j, const player_t *p)
 {
+    if (j->k->family == &retro_family_mesh)
+        return print_mesh_stats(j);
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
     memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
@@ -96,6 +160,7 @@ int cmd_render(int argc, char **argv)
     render_opts_init(&o);
     /* The two flags without a value are taken out before the shared parser sees argv. */
     int no_skip = 0, simd_skip = 0, stats = 0, n = 0;
+    long time_n = 0; /* --time: frames to time, 0 when not asked */
     char **args = malloc(((size_t)argc + 1) * sizeof *args);
     if (!args)
         return cli_error("render", "out of memory");
@@ -106,6 +171,19 @@ int cmd_render(int argc, char **argv)
             simd_skip = 1;
         else if (i > 0 && !strcmp(argv[i], "--stats"))
             stats = 1;
+        else if (i > 0 && !strcmp(argv[i], "--time")) {
+            time_n = 50;
+            /* an optional count: the next argument when it is a number */
+            long v;
+            if (i + 1 < argc && argv[i + 1][0] != '-' && !cli_int(argv[i + 1], -2147483647L, 2147483647L, &v)) {
+                if (v < 1 || v > 100000) {
+                    free(args);
+                    return cli_error("render", "bad frame count '%s' for --time (1..100000)", argv[i + 1]);
+                }
+                time_n = v;
+                i++;
+            }
+        }
         else
             args[n++] = argv[i];
     }
@@ -114,7 +192,7 @@ int cmd_render(int argc, char **argv)
     free(args);
     if (r)
         return r == 1 ? 0 : r;
-    if (!out_path)
+    if (!out_path && !time_n)
         return cli_error("render", "no output given: -o OUT.ppm or -o OUT.png");
 
     render_job j;
@@ -124,7 +202,9 @@ int cmd_render(int argc, char **argv)
     j.rc.simd_skip = simd_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
-    int status = job_write("render", &j, &p, out_path);
+    int status = time_n ? time_frames(&j, &p, time_n) : 0;
+    if (!status && out_path)
+        status = job_write("render", &j, &p, out_path);
     if (!status && stats)
         status = print_stats(&j, &p);
     job_close(&j);

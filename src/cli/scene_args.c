@@ -25,8 +25,11 @@ int render_opt(const char *cmd, render_opts *o, const char *a, const char *v)
     if (!strcmp(a, "-k"))
         o->kernel = v;
     else if (!strcmp(a, "-m")) {
-        if (retro_mode_parse(v, &o->mode))
-            return cli_error(cmd, "unknown mode '%s' (exact, course, truth, fixed, lod)", v);
+        int m;
+        if (retro_mode_parse(v, &o->mode) && retro_family_mode_parse(&retro_family_mesh, v, &m))
+            return cli_error(cmd, "unknown mode '%s' (voxel: exact, course, truth, fixed, lod; "
+                                  "mesh: binary32, binary64, int)", v);
+        o->mode_name = v;
         o->have_mode = 1;
     } else if (!strcmp(a, "-s")) {
         if (cli_size(v, &o->W, &o->H) || o->W > RETRO_MAX_SCREEN || o->H > RETRO_MAX_SCREEN ||

@@ -13,7 +13,8 @@
 typedef struct render_opts {
     const char *map;    /* MAP prefix, or a .scene file */
     const char *kernel; /* NULL: the fastest this CPU runs for the mode */
-    retro_mode mode;
+    retro_mode mode;    /* the voxel mode -m names, when it names one */
+    const char *mode_name; /* -m as given: a mode of the kernel's family (voxel or mesh) */
     int W, H;
     long D, z, angle, threads;
     float x, y, lod;
@@ -41,7 +42,7 @@ typedef struct render_job {
     retro_map map;
     uint8_t *morph;      /* the morph keyframe's heights, or NULL */
     const retro_kernel *k;
-    retro_mode mode;
+    retro_mode mode;     /* a mode of k's family (retro_family_mode_name) */
     struct retro_view view; /* the map's default view: what neither file nor flags set */
     uint32_t *out;
     ctx_t c;
@@ -60,5 +61,9 @@ void job_pose(render_job *j, const render_opts *o, int frame, player_t *p);
 /* Renders pose p and writes it to path (.ppm or .png). Returns 0 or CLI_EBADINPUT. */
 int job_write(const char *cmd, render_job *j, const player_t *p, const char *path);
 void job_close(render_job *j);
+/* The one-line error for a failed render (a mesh frame's message names what is wrong). */
+int job_error(const char *cmd, const render_job *j, retro_err e);
+/* j->mode's name in its kernel's family. */
+const char *job_mode_name(const render_job *j);
 
 #endif

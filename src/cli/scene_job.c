@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "retro_mesh.h"
 #include "scene_args.h"
 #include "work_estimate.h"
 
@@ -29,7 +30,7 @@ static int open_maps(const char *cmd, const char *prefix, render_job *j)
     char err[1400];
     if (retro_map_load(prefix, &j->map, err, sizeof err))
         return cli_error(cmd, "%s", err);
-    if (j->mode == RETRO_MODE_COURSE && j->map.size < 2)
+    if (j->k->family == &retro_family_voxel && j->mode == RETRO_MODE_COURSE && j->map.size < 2)
         return cli_error(cmd, "mode course needs a map of size 2 or more");
     if ((j->scene.fx.flags & RETRO_FX_MORPH) && load_morph(cmd, j))
         return CLI_EBADINPUT;
@@ -40,14 +41,29 @@ static int open_maps(const char *cmd, const char *prefix, render_job *j)
 static int pick_kernel(const char *cmd, const render_opts *o, render_job *j)
 {
     retro_effects *fx = &j->scene.fx;
-    /* A scene's lod effect is mode lod unless the command line asks for another mode. */
-    j->mode = o->have_mode ? o->mode : (fx->flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT;
-    if (fx->flags && j->mode != RETRO_MODE_EXACT && j->mode != RETRO_MODE_LOD)
-        return cli_error(cmd, "%s: effects need mode exact or lod, not %s", o->map,
-                         retro_mode_name(j->mode));
-    j->k = o->kernel ? retro_kernel_find(o->kernel) : retro_kernel_best(j->mode);
-    if (!j->k)
+    const retro_kernel *named = o->kernel ? retro_kernel_find(o->kernel) : NULL;
+    if (o->kernel && !named)
         return cli_error(cmd, "unknown kernel '%s' (retro kernels lists them)", o->kernel);
+    /* The family: the named kernel's, else the one whose mode -m names (voxel first). */
+    int m = 0;
+    const retro_family *fam = named ? named->family : &retro_family_voxel;
+    if (!named && o->have_mode && retro_family_mode_parse(fam, o->mode_name, &m))
+        fam = &retro_family_mesh;
+    if (o->have_mode && retro_family_mode_parse(fam, o->mode_name, &m))
+        return cli_error(cmd, "kernel %s (family %s) has no mode '%s'", named->name, fam->name, o->mode_name);
+    if (fam == &retro_family_voxel) {
+        /* A scene's lod effect is mode lod unless the command line asks for another mode. */
+        j->mode = o->have_mode ? (retro_mode)m : (fx->flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT;
+        if (fx->flags && j->mode != RETRO_MODE_EXACT && j->mode != RETRO_MODE_LOD)
+            return cli_error(cmd, "%s: effects need mode exact or lod, not %s", o->map,
+                             retro_mode_name(j->mode));
+    } else
+        j->mode = (retro_mode)m; /* binary32 unless -m says otherwise */
+    j->k = named ? named
+         : fam == &retro_family_voxel ? retro_kernel_best(j->mode)
+                                      : retro_family_best(fam, (int)j->mode, j->is_scene ? fx : NULL);
+    if (!j->k)
+        j->k = retro_family_reference(fam); /* refused below, with the reason */
     char why[128];
     if (retro_kernel_check(j->k, j->mode, j->is_scene ? fx : NULL, why, sizeof why))
         return cli_error(cmd, "%s", why);
@@ -128,19 +144,30 @@ void job_pose(render_job *j, const render_opts *o, int frame, player_t *p)
     j->scene.fx.morph_t = morph_t;
 }
 
+int job_error(const char *cmd, const render_job *j, retro_err e)
+{
+    const char *why = j->k->family == &retro_family_mesh ? retro_mesh_last_error(&j->rc) : "";
+    return cli_error(cmd, "%s", *why ? why : retro_strerror(e));
+}
+
+const char *job_mode_name(const render_job *j)
+{
+    return retro_family_mode_name(j->k->family, (int)j->mode);
+}
+
 int job_write(const char *cmd, render_job *j, const player_t *p, const char *path)
 {
     char err[1400];
     retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
     if (e)
-        return cli_error(cmd, "%s", retro_strerror(e));
+        return job_error(cmd, j, e);
     if (retro_image_write(path, j->out, j->c.scr_width, j->c.scr_height, err, sizeof err))
         return cli_error(cmd, "%s", err);
     /* Say what ran, once, after the first image is written (a failure prints only its error):
      * the kernel is chosen per CPU and mode unless -k names it. */
     if (!j->said++)
         fprintf(stderr, "retro %s: kernel %s%s, mode %s, %dx%d, D %d%s\n", cmd, j->k->name,
-                j->chosen ? " (the fastest here for the mode)" : "", retro_mode_name(j->mode), j->c.scr_width,
+                j->chosen ? " (the fastest here for the mode)" : "", job_mode_name(j), j->c.scr_width,
                 j->c.scr_height, j->c.distance, j->is_scene && j->scene.fx.flags ? ", with the scene's effects" : "");
     return 0;
 }

@@ -86,7 +86,7 @@ const verify_fx_case verify_fx_cases[] = {
     {"fx-water-fog", "islands", 10, RETRO_FX_WATER | RETRO_FX_FOG, 0, 0, 1},
     {"fx-morph-water", "islands", 120, RETRO_FX_MORPH | RETRO_FX_WATER, 0, 0, 1},
     {"fx-lod-fog-bilinear", "alpine", 250, RETRO_FX_LOD | RETRO_FX_FOG | RETRO_FX_BILINEAR, 0, 0, 1},
-    {"fx-all", "alpine", 333, RETRO_FX_ALL, 1, 25, 1},
+    {"fx-all", "alpine", 333, RETRO_FX_VOXEL, 1, 25, 1},
 };
 
 const int verify_fx_case_count = (int)(sizeof verify_fx_cases / sizeof verify_fx_cases[0]);

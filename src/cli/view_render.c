@@ -1,7 +1,8 @@
 /* The viewer's adapter to the library (see view_render.h): kernel table walks, mode and effect
- * rules, the render call. The rules are the library's: effects need mode exact or lod, a
- * kernel must render the scene's per-sample effects, and the scene's lod effect makes mode
- * exact render as lod. */
+ * rules, the render call. The rules are the library's: a kernel must render the scene's
+ * effects (retro_kernel_check), modes are its family's (Tab into another family starts at the
+ * family's first mode); in the voxel family effects need mode exact or lod, and the scene's
+ * lod effect makes mode exact render as lod. */
 #include "view_render.h"
 
 #include <stdio.h>
@@ -10,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "retro_mesh.h"
 
 static const retro_kernel *kernel(const view_state *v)
 {
@@ -21,17 +23,21 @@ static unsigned scene_fx(const view_state *v)
     return v->j.is_scene ? v->j.scene.fx.flags : 0;
 }
 
-static retro_mode effective(const view_state *v, retro_mode m)
+static int is_voxel(const view_state *v)
 {
-    return v->fx_on && (scene_fx(v) & RETRO_FX_LOD) && m == RETRO_MODE_EXACT ? RETRO_MODE_LOD : m;
+    return kernel(v)->family == &retro_family_voxel;
 }
 
-/* Whether k renders the scene's effects (when they are on): their per-sample ones, and mode
- * lod if the scene's lod effect asks for it. */
+static retro_mode effective(const view_state *v, retro_mode m)
+{
+    return is_voxel(v) && v->fx_on && (scene_fx(v) & RETRO_FX_LOD) && m == RETRO_MODE_EXACT ? RETRO_MODE_LOD : m;
+}
+
+/* Whether k renders the scene's effects (when they are on) in the mode chosen: the library's
+ * check, which also turns voxel mode exact into lod for a scene with lod. */
 static int renders_fx(const view_state *v, const retro_kernel *k)
 {
-    return !v->fx_on || (!(scene_fx(v) & RETRO_FX_PER_SAMPLE & ~k->fx) &&
-                         retro_kernel_has_mode(k, effective(v, v->mode)));
+    return !v->fx_on || retro_kernel_check(k, (int)v->mode, &v->j.scene.fx, NULL, 0) != RETRO_EUNSUPPORTED;
 }
 
 int view_open(const char *cmd, const render_opts *o, view_state *v)
@@ -83,12 +89,15 @@ void view_move(view_state *v, view_motion m)
 void view_next_kernel(view_state *v, int dir)
 {
     size_t n = retro_kernel_count, i = v->kernel;
+    const retro_family *was = kernel(v)->family;
     do
         i = (i + n + (size_t)(dir < 0 ? n - 1 : 1)) % n;
     while (!retro_kernel_runs_here(&retro_kernels[i]));
     v->kernel = i;
     v->status[0] = 0;
-    if (!retro_kernel_has_mode(kernel(v), effective(v, v->mode)))
+    /* mode numbers are per family: another family starts at its first mode (voxel exact,
+     * mesh binary32) */
+    if (kernel(v)->family != was || !retro_kernel_has_mode(kernel(v), effective(v, v->mode)))
         v->mode = RETRO_MODE_EXACT;
     if (!renders_fx(v, kernel(v))) {
         v->fx_on = 0;
@@ -100,11 +109,12 @@ void view_next_kernel(view_state *v, int dir)
 void view_next_mode(view_state *v)
 {
     retro_mode m = v->mode;
+    int count = kernel(v)->family->mode_count;
     v->status[0] = 0;
-    for (int i = 0; i < RETRO_MODE_COUNT; i++) {
-        m = (retro_mode)((m + 1) % RETRO_MODE_COUNT);
-        if (v->fx_on && m != RETRO_MODE_EXACT && m != RETRO_MODE_LOD)
-            continue; /* effects need exact or lod */
+    for (int i = 0; i < count; i++) {
+        m = (retro_mode)((m + 1) % count);
+        if (is_voxel(v) && v->fx_on && m != RETRO_MODE_EXACT && m != RETRO_MODE_LOD)
+            continue; /* voxel effects need exact or lod */
         if (effective(v, m) != m)
             continue; /* exact would render as lod: no new mode */
         if (retro_kernel_has_mode(kernel(v), m))
@@ -122,7 +132,7 @@ void view_toggle_effects(view_state *v)
     }
     retro_mode old = v->mode;
     v->fx_on = !v->fx_on;
-    if (v->fx_on && v->mode != RETRO_MODE_EXACT && v->mode != RETRO_MODE_LOD)
+    if (is_voxel(v) && v->fx_on && v->mode != RETRO_MODE_EXACT && v->mode != RETRO_MODE_LOD)
         v->mode = RETRO_MODE_EXACT;
     if (!renders_fx(v, kernel(v))) {
         v->fx_on = 0;
@@ -150,7 +160,8 @@ int view_render(view_state *v)
     v->j.rc.threads = v->threads;
     retro_err e = retro_render(&v->j.rc, kernel(v), v->mode, &v->pose, &v->j.c);
     if (e) {
-        snprintf(v->status, sizeof v->status, "%s", retro_strerror(e));
+        const char *why = is_voxel(v) ? "" : retro_mesh_last_error(&v->j.rc);
+        snprintf(v->status, sizeof v->status, "%s", *why ? why : retro_strerror(e));
         return -1;
     }
     return 0;
@@ -161,16 +172,14 @@ const char *view_kernel_name(const view_state *v)
     return kernel(v)->name;
 }
 
-/* Every kernel of the table is a voxel-space (height map) kernel today. */
 const char *view_family_name(const view_state *v)
 {
-    (void)v;
-    return "voxel";
+    return kernel(v)->family->name;
 }
 
 const char *view_mode_name(const view_state *v)
 {
-    return retro_mode_name(effective(v, v->mode));
+    return retro_family_mode_name(kernel(v)->family, (int)effective(v, v->mode));
 }
 
 int view_kernel_threaded(const view_state *v)

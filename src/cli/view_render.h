@@ -12,7 +12,8 @@ typedef struct view_state {
     render_job j;       /* map, scene, frame buffer (j.out at j.c's size), context */
     player_t pose;
     size_t kernel;      /* row of the kernel table */
-    retro_mode mode;    /* as chosen; the scene's lod effect renders exact as lod */
+    retro_mode mode;    /* a mode of the kernel's family, as chosen; the scene's lod effect
+                         * renders voxel exact as lod */
     int fx_on;          /* the scene's effects are in force */
     int threads;        /* for threaded kernels */
     char status[160];   /* why the last key did not do what it says, or "" */

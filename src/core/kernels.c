@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "kernels.h"
+#include "mesh_family.h"
 #include "retro_scene.h"
 
 /* Every mode, the accuracy variants of docs/ACCURACY.md included. */
@@ -13,15 +14,20 @@
 #define EXACT RETRO_MODE_BIT(RETRO_MODE_EXACT)
 #define EXACT_COURSE (EXACT | RETRO_MODE_BIT(RETRO_MODE_COURSE))
 /* Effects: every one, or all but those needing code the SIMD strips lack (docs/EFFECTS.md). */
-#define FX_ALL RETRO_FX_ALL
-#define FX_SIMD (RETRO_FX_ALL & ~(RETRO_FX_BILINEAR | RETRO_FX_LOD))
+#define FX_ALL RETRO_FX_VOXEL
+#define FX_SIMD (RETRO_FX_VOXEL & ~(RETRO_FX_BILINEAR | RETRO_FX_LOD))
 /* Each ISA level includes the ones below it, as the files are compiled (cpu.c levels). */
 #define ISA_SSE2 RETRO_CPU_SSE2
 #define ISA_AVX2 (ISA_SSE2 | RETRO_CPU_AVX2)
 #define ISA_AVX512 (ISA_AVX2 | RETRO_CPU_AVX512)
 #define VOXEL &retro_family_voxel
+#define MESH &retro_family_mesh
+#define MESH_MODES ((1u << RETRO_MESH_MODE_COUNT) - 1)
+#define MESH_B32 RETRO_MODE_BIT(RETRO_MESH_BINARY32)
+/* The painter has no depth buffer to draw the water plane against (docs/MESH.md). */
+#define FX_MESH_PAINTER (RETRO_FX_MESH & ~(unsigned)RETRO_FX_WATER)
 
-const retro_family *const retro_families[] = {&retro_family_voxel};
+const retro_family *const retro_families[] = {&retro_family_voxel, &retro_family_mesh};
 const size_t retro_family_count = sizeof retro_families / sizeof retro_families[0];
 
 const retro_kernel retro_kernels[] = {
@@ -42,6 +48,20 @@ const retro_kernel retro_kernels[] = {
      "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX_ALL, VOXEL},
+    /* mesh: each row a thin wrapper passing the module's kernel id (src/mesh/family.c) */
+    {"mesh-zbuffer", retro_kernel_mesh_zbuffer, 0, MESH_MODES, 0,
+     "triangles, depth buffer, front to back in grid order: the reference", NULL, RETRO_FX_MESH, MESH},
+    {"mesh-painter", retro_kernel_mesh_painter, 0, MESH_MODES, 0,
+     "triangles back to front in grid order, no depth buffer", NULL, FX_MESH_PAINTER, MESH},
+    {"mesh-avx2", retro_kernel_mesh_avx2, ISA_AVX2, MESH_B32, 0,
+     "z-buffer; vertices, culling and triangle setup in 8 lanes, sub-pixel triangles dropped early",
+     NULL, RETRO_FX_MESH, MESH},
+    {"mesh-avx512", retro_kernel_mesh_avx512, ISA_AVX512, MESH_B32, 0,
+     "z-buffer; vertices, culling and triangle setup in 16 lanes, sub-pixel triangles dropped early",
+     NULL, RETRO_FX_MESH, MESH},
+    {"mesh-omp", retro_kernel_mesh_omp, ISA_AVX2, MESH_B32, RETRO_KF_THREADED,
+     "row bands on every core (OpenMP, pinned with hwloc), each the best SIMD block stage", NULL,
+     RETRO_FX_MESH, MESH},
 };
 
 const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
@@ -129,15 +149,22 @@ retro_err retro_kernel_check(const retro_kernel *k, int mode, const retro_effect
     return RETRO_OK;
 }
 
-const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *fx)
+const retro_kernel *retro_family_best(const retro_family *fam, int mode, const struct retro_effects *fx)
 {
     const retro_kernel *best = NULL;
     for (size_t i = 0; i < retro_kernel_count; i++) {
         const retro_kernel *k = &retro_kernels[i];
-        if (k->family == &retro_family_voxel && retro_kernel_check(k, (int)mode, fx, NULL, 0) == RETRO_OK)
+        /* a kernel allowed a documented difference from the reference is never the default */
+        if (k->family == fam && retro_kernel_check(k, mode, fx, NULL, 0) == RETRO_OK &&
+            !(fam->documented_difference && fam->documented_difference(k, mode, fx, 1)))
             best = k;
     }
     return best;
+}
+
+const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *fx)
+{
+    return retro_family_best(&retro_family_voxel, (int)mode, fx);
 }
 
 const retro_kernel *retro_kernel_best(retro_mode mode)
@@ -167,6 +194,7 @@ retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const pla
     e = k->family->setup(rc, k->family->effective_mode(mode, rc->fx), p, c, &frame);
     if (e)
         return e;
+    rc->kernel_err = RETRO_OK;
     k->fn(frame, rc);
-    return RETRO_OK;
+    return rc->kernel_err;
 }

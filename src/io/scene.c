@@ -21,7 +21,7 @@
 #include "retro.h"
 
 enum { SEC_SCENE, SEC_CAMERA, SEC_SCREEN, SEC_PATH, SEC_FOG, SEC_SHADE, SEC_WATER, SEC_BILINEAR,
-       SEC_LOD, SEC_HORIZON, SEC_MORPH, SEC_COUNT };
+       SEC_LOD, SEC_HORIZON, SEC_MORPH, SEC_TEXTURE, SEC_GOURAUD, SEC_WIREFRAME, SEC_CULL, SEC_COUNT };
 
 static const struct {
     const char *name;
@@ -39,6 +39,10 @@ static const struct {
     {"lod", RETRO_FX_LOD, "enabled, rate"},
     {"horizon", RETRO_FX_HORIZON, "enabled, pitch"},
     {"morph", RETRO_FX_MORPH, "enabled, map, t"},
+    {"texture", RETRO_FX_TEXTURE, "enabled"},
+    {"gouraud", RETRO_FX_GOURAUD, "enabled"},
+    {"wireframe", RETRO_FX_WIREFRAME, "enabled"},
+    {"cull", RETRO_FX_CULL, "enabled"},
 };
 
 /* Bounds that keep every later computation in range (angle differences, pixel counts). */
@@ -128,7 +132,7 @@ static void section_header(parser *P, const char *name)
     int i = find_section(name);
     if (i < 0) {
         fail(P, "[%s]: unknown section (scene, camera, screen, path, fog, shade, water, "
-                "bilinear, lod, horizon, morph)", name);
+                "bilinear, lod, horizon, morph, texture, gouraud, wireframe, cull)", name);
         return;
     }
     if (!P->sec_line[i])

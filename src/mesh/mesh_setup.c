@@ -158,6 +158,10 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
     unsigned flags = fx ? fx->flags : 0;
     if (flags & ~(unsigned)RETRO_FX_ALL)
         return fail(mc, RETRO_MESH_EINVAL, "unknown effect flag");
+    /* A scene's mesh-only effects are the same bits as the options' (retro_scene.h); `cull`
+     * is the default here, and the options' nocull turns it off. */
+    mfx |= flags & (RETRO_FX_MESH_ONLY & ~(unsigned)RETRO_FX_CULL);
+    flags &= ~(unsigned)RETRO_FX_MESH_ONLY;
     if (mfx & ~(unsigned)RETRO_MESH_FX_ALL)
         return fail(mc, RETRO_MESH_EINVAL, "unknown mesh effect flag");
     if ((mfx & RETRO_MESH_FX_TEXTURE) && (mfx & RETRO_MESH_FX_GOURAUD))

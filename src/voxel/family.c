@@ -21,7 +21,7 @@ const retro_family retro_family_voxel = {
     .reference = "naive",
     .mode_count = RETRO_MODE_COUNT,
     .mode_names = retro_voxel_mode_names,
-    .fx = RETRO_FX_ALL,
+    .fx = RETRO_FX_VOXEL,
     .effective_mode = voxel_effective_mode,
     .setup = voxel_setup,
 };

@@ -9,6 +9,7 @@
 #include "retro_scene.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
+#include "mesh_family.h"
 #endif
 
 void retro_ctx_init(retro_ctx *rc)
@@ -44,6 +45,7 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->simd_cells);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
+    retro_mesh_state_free(rc->mesh);
     if (rc->pyr)
         retro_pyramid_free(rc->pyr);
     free(rc->pyr);
@@ -341,7 +343,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         return e;
 
     const retro_effects *fx = rc->fx;
-    unsigned flags = fx ? fx->flags & RETRO_FX_ALL : 0;
+    unsigned flags = fx ? fx->flags & RETRO_FX_VOXEL : 0;
     if (flags && mode != RETRO_MODE_EXACT && mode != RETRO_MODE_LOD)
         return RETRO_EINVAL; /* effects are defined on modes exact and lod */
     if (flags && !effects_valid(fx))
