@@ -43,7 +43,17 @@ def context_field(md, name):
     return m.group(1) if m else "unknown"
 
 
-def bench_blocks(md, raw):
+def noisy_note(md):
+    """The run's own noise warning, carried into the README so no figure hides it."""
+    m = re.search(r"^> \*\*Noisy run\.\*\* (\d+) rows", md, re.M)
+    if not m:
+        return ""
+    return (f" **This run was noisy:** {m.group(1)} rows spread more than 10% over their repetitions "
+            "(marked ⚠ below and in BENCH.md), so their medians, and conclusions drawn from them, are "
+            "provisional.")
+
+
+def bench_blocks(md, raw, raw_json=None):
     t = tables(md)
     key = next((k for k in t if k.startswith("Mode exact,")), None)
     if key is None:
@@ -52,7 +62,7 @@ def bench_blocks(md, raw):
     scenes = head[2:head.index("geomean")]
     byname = {}
     for r in rows:
-        byname[(r[0].strip("`"), int(r[1]))] = r
+        byname[(r[0].replace("`", ""), int(r[1]))] = r
     blocks = {}
     date = context_field(md, "date")
     commit = context_field(md, "commit")
@@ -64,7 +74,8 @@ def bench_blocks(md, raw):
         f"Figures in this section come from one `make bench` run ({about}), published by "
         "`make publish`. The full table with every mode "
         "and the sweeps is in [`results/BENCH.md`](results/BENCH.md)"
-        + ("; the raw numbers in `results/bench.json`." if raw else "."))
+        + ("; the raw numbers in `results/bench.json`." if raw else ".")
+        + noisy_note(md))
     lines = ["| kernel | threads | " + " | ".join(scenes) + " | vs naive | vs ybuffer | max cv |",
              "|---|--:|" + "--:|" * (len(scenes) + 3)]
     for r in rows:
@@ -80,13 +91,14 @@ def bench_blocks(md, raw):
 
     default = [s for s in scenes if s in ("alpine", "islands", "canyon")]
     yb = [ms("naive", 1, s) / ms("ybuffer", 1, s) for s in default]
-    simd = [k for (k, n) in byname if k.startswith("simd-")]
-    single = [k for (k, n) in byname if n == 1 and k not in ("naive",)]
+    plain = [kn for kn in byname if not kn[0].endswith("(no skipping)")]
+    simd = [k for (k, n) in plain if k.startswith("simd-")]
+    single = [k for (k, n) in plain if n == 1 and k not in ("naive",)]
     best_simd = min(simd, key=lambda k: geo([ms(k, 1, s) for s in scenes]))
     simd_r = [ms("ybuffer", 1, s) / ms(best_simd, 1, s) for s in scenes]
     best1 = min(single, key=lambda k: geo([ms(k, 1, s) for s in scenes]))
     omp_r = [ms(best1, 1, s) / ms("omp", 2, s) for s in scenes]
-    best = min(byname, key=lambda kn: geo([ms(kn[0], kn[1], s) for s in scenes]))
+    best = min(plain, key=lambda kn: geo([ms(kn[0], kn[1], s) for s in scenes]))
     best_ms = [ms(best[0], best[1], s) for s in scenes]
     verdict = lambda ok: "met" if ok else "**not met**"
     tl = ["| target | measured in this run | verdict |", "|---|---|---|",
@@ -133,7 +145,79 @@ def bench_blocks(md, raw):
         if m:
             lines += ["", m.group(0)]
         blocks["bench:effects"] = "\n".join(lines)
+
+    mesh_key = next((k for k in t if k.startswith("Mesh family")), None)
+    if mesh_key:
+        blocks["bench:mesh"] = mesh_block(t[mesh_key], scenes, ms, geo, verdict)
+    blocks["bench:skipping"] = skipping_block(byname, scenes, ms, geo, t, raw_json)
     return blocks
+
+
+def mesh_block(table, scenes, voxel_ms, geo, verdict):
+    """The mesh family against the voxel family, and the mesh speed targets, from one run."""
+    head, rows = table[0], table[1:]
+    c = {name: i for i, name in enumerate(head)}
+    m = {}
+    for r in rows:
+        m.setdefault(r[c["kernel"]].strip("`"), {})[r[c["scene"]]] = num(r[c["ms/frame"]])
+    sc = [s for s in scenes if all(s in v for v in m.values())]
+    g = {k: geo([v[s] for s in sc]) for k, v in m.items()}
+    single = [k for k in m if k in ("mesh-avx2", "mesh-avx512")]
+    best1 = min(single, key=g.get) if single else None
+    best = min(m, key=g.get)
+    vox = geo([voxel_ms("omp", 2, s) for s in sc])
+    lines = ["| kernel | " + " | ".join(sc) + " | geomean | vs `mesh-zbuffer` | vs `omp`, 2 threads (voxel) |",
+             "|---|" + "--:|" * (len(sc) + 3)]
+    for k, v in m.items():
+        lines.append(f"| `{k}` | " + " | ".join(f"{v[s]:.2f}" for s in sc)
+                     + f" | {g[k]:.2f} | {fmt(g['mesh-zbuffer'] / g[k])} | {fmt(g[k] / vox)} slower |")
+    lines += ["", f"- **Mesh against voxel.** The fastest mesh kernel, `{best}`, takes {g[best]:.1f} ms per "
+              f"frame (geometric mean over the scenes), {fmt(g[best] / vox)} the time of the fastest voxel "
+              f"kernel (`omp`, 2 threads, {vox:.3f} ms) at the same size and distance."]
+    if best1:
+        r1 = g["mesh-zbuffer"] / g[best1]
+        lines.append(f"- **Target: best single-thread mesh SIMD ≥ 5× `mesh-zbuffer`.** `{best1}`: {fmt(r1)} — "
+                     f"{verdict(r1 >= 5)}.")
+        if "mesh-omp" in g:
+            r2 = g[best1] / g["mesh-omp"]
+            lines.append(f"- **Target: `mesh-omp` on 2 threads ≥ 1.8× the best single-thread mesh kernel.** "
+                         f"{fmt(r2)} — {verdict(r2 >= 1.8)}.")
+    return "\n".join(lines)
+
+
+def skipping_block(byname, scenes, ms, geo, t, raw_json):
+    """Occlusion skipping: each kernel with and without it in the same run, and issue 18's targets."""
+    lines = ["| kernel | threads | with skipping | without | speedup |", "|---|--:|--:|--:|--:|"]
+    for (k, n) in byname:
+        if k.endswith(" (no skipping)") or (k + " (no skipping)", n) not in byname:
+            continue
+        a = geo([ms(k, n, s) for s in scenes])
+        b = geo([ms(k + " (no skipping)", n, s) for s in scenes])
+        lines.append(f"| `{k}` | {n} | {a:.3f} | {b:.3f} | {fmt(b / a)} |")
+    sweep = next((v for kk, v in t.items() if kk.startswith("Distance sweep")), None)
+    if sweep:
+        h = sweep[0]
+        rows = {r[0]: r for r in sweep[1:]}
+        yb, ns = rows.get("`ybuffer`"), rows.get("`ybuffer` (no skipping)")
+        if yb and ns:
+            lines += ["", "`ybuffer` on the distance sweep (alpine, 640×480), ms per frame with and without "
+                      "skipping: " + ", ".join(f"{h[i]} {yb[i]} / {ns[i]}" for i in range(2, len(h))) + "."]
+    if raw_json:
+        ev = {}
+        for b in raw_json.get("benchmarks", []):
+            name = b.get("run_name", "")
+            if (b.get("aggregate_name") == "median" and name.startswith("exact/")
+                    and "/ybuffer/1t/640x480/D800" in name and "noskip" not in name and "evaluated%" in b):
+                ev[name.split("/")[1]] = b["evaluated%"]
+        if ev:
+            lines += ["", "Samples `ybuffer` evaluates, as a share of W×(D−1): "
+                      + ", ".join(f"{s} {ev[s]:.0f}%" for s in scenes if s in ev) + "."]
+    omp = geo([ms("omp", 2, s) for s in scenes])
+    lines += ["", f"- **Target: `omp` on 2 threads ≤ 0.10 ms per frame** (geometric mean): {omp:.3f} ms — "
+              f"{'met' if omp <= 0.10 else '**not met**'}. The SIMD strips, which `omp` runs, skip only when "
+              "asked (`--simd-skip`): their group probe is exact but was not faster where measured "
+              "(docs/SKIPPING.md)."]
+    return "\n".join(lines)
 
 
 def accuracy_blocks(md):
@@ -194,7 +278,30 @@ def accuracy_blocks(md):
                f"{get('exact', fms):.3f} ms; the cheapest variant on scalar `ybuffer` takes "
                f"{scalar_best:.3f} ms.")
     out["accuracy:prose"] = "\n".join(say)
+    fam_key = next((k for k in t if k.startswith("Across families")), None)
+    if fam_key:
+        out["accuracy:families"] = families_block(t[fam_key])
     return out
+
+
+def families_block(table):
+    """Both families against the continuous terrain (the mesh in binary64), from one accuracy run."""
+    head, rows = table[0], table[1:]
+    c = {name: i for i, name in enumerate(head)}
+    lines = ["| " + " | ".join(head) + " |", "|---|---|---|---|" + "---:|" * (len(head) - 4)]
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    v = {r[c["variant"]]: r for r in rows}
+    get = lambda k, col: num(v[k][c[col]])
+    if "exact" in v and "mesh binary32" in v:
+        px, sil, ms = "pixels differ", "mean silhouette error (rows)", "ms/frame"
+        lines += ["", f"- **What the voxel approximation costs in accuracy.** Against the continuous terrain "
+                  f"(the mesh in binary64), voxel mode exact differs on {get('exact', px):.1f}% of pixels with "
+                  f"a mean silhouette error of {get('exact', sil):.3f} rows; the mesh in binary32 on "
+                  f"{get('mesh binary32', px):.3f}%.",
+                  f"- **What it buys in time.** Voxel exact with its fastest kernel takes {get('exact', ms):.3f} ms, "
+                  f"the mesh in binary32 with its fastest kernel {get('mesh binary32', ms):.1f} ms: "
+                  f"{fmt(get('mesh binary32', ms) / get('exact', ms))} the time, in this accuracy run."]
+    return "\n".join(lines)
 
 
 def replace(readme, blocks):
@@ -214,8 +321,10 @@ def main(argv):
         sys.exit(__doc__)
     results, path = args
     import os
-    blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(),
-                          os.path.exists(f"{results}/bench.json"))
+    import json
+    raw = os.path.exists(f"{results}/bench.json")
+    blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(), raw,
+                          json.load(open(f"{results}/bench.json", encoding="utf-8")) if raw else None)
     blocks.update(accuracy_blocks(open(f"{results}/ACCURACY.md", encoding="utf-8").read()))
     old = open(path, encoding="utf-8").read()
     new = replace(old, blocks)
