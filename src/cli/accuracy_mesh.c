@@ -1,23 +1,11 @@
 /* retro accuracy across families: see accuracy_mesh.h. */
+#include "timing.h"
 #include "accuracy_mesh.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
 
 int acc_mesh_init(acc_mesh *am, int poses, int W, int H)
 {
@@ -60,11 +48,11 @@ static double time_mode(acc_mesh *am, int mode, ctx_t *c, const player_t *p)
     double t[ACC_MESH_TIMED];
     retro_render(&am->rc, k, mode, p, c);
     for (int i = 0; i < ACC_MESH_TIMED; i++) {
-        double t0 = now_ms();
+        double t0 = cli_now_ms();
         retro_render(&am->rc, k, mode, p, c);
-        t[i] = now_ms() - t0;
+        t[i] = cli_now_ms() - t0;
     }
-    qsort(t, ACC_MESH_TIMED, sizeof t[0], cmp_double);
+    qsort(t, ACC_MESH_TIMED, sizeof t[0], cli_cmp_double);
     return t[ACC_MESH_TIMED / 2];
 }
 
@@ -93,7 +81,7 @@ void acc_mesh_rows(acc_mesh *am, acc_row *rows, double exact_ms)
         r->label = (const char *[]){"mesh binary32", "mesh binary64", "mesh int"}[m];
         r->what = what[m];
         r->kernel = acc_best_in_family(&retro_family_mesh, m, &am->fx)->name;
-        qsort(am->ms[m], (size_t)am->n, sizeof(double), cmp_double);
+        qsort(am->ms[m], (size_t)am->n, sizeof(double), cli_cmp_double);
         r->ms = am->n ? am->ms[m][am->n / 2] : 0;
         r->speedup = r->ms > 0 ? exact_ms / r->ms : 0;
         acc_summary(&am->stats[m], r);

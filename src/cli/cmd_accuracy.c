@@ -7,6 +7,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "timing.h"
 #include "accuracy_mesh.h"
 #include "accuracy_metrics.h"
 #include "cli.h"
@@ -33,19 +34,6 @@ typedef struct {
     int n;
 } variant;
 
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 /* Renders v's frame at pose p into out (W x H) with rc, timing only the render itself. One
  * context serves every variant: its caches are keyed by mode and map, and a threaded kernel's
  * pool binds its threads once instead of at every switch between contexts. */
@@ -56,12 +44,12 @@ static double render_variant(retro_ctx *rc, const retro_kernel *k, variant *v, c
     ctx_t c = {w, h, m->size, D, SKY, m->height, m->color, v->half ? small : out};
     static int peer_ybuf[W]; /* the peer's y-buffer: scratch allocated once */
     rc->lod = v->lod;
-    double t0 = now_ms();
+    double t0 = cli_now_ms();
     if (v->peer)
         peer_voxelspace_render(p, &c, PEER_VOXELSPACE_DZ_GROWTH, peer_ybuf);
     else
         retro_render(rc, k, v->mode, p, &c);
-    double t = now_ms() - t0;
+    double t = cli_now_ms() - t0;
     if (v->half)
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++)
@@ -81,7 +69,7 @@ static double time_variant(retro_ctx *rc, const retro_kernel *k, variant *v, con
         if (i >= 2)
             t[i - 2] = ms;
     }
-    qsort(t, 5, sizeof t[0], cmp_double);
+    qsort(t, 5, sizeof t[0], cli_cmp_double);
     return t[2];
 }
 
@@ -226,8 +214,8 @@ int cmd_accuracy(int argc, char **argv)
     if (!status) {
         double exact_ms = 0, exact_y = 0;
         for (int k = 0; k < nv; k++) {
-            qsort(vars[k].ms, (size_t)vars[k].n, sizeof(double), cmp_double);
-            qsort(vars[k].ms_y, (size_t)vars[k].n, sizeof(double), cmp_double);
+            qsort(vars[k].ms, (size_t)vars[k].n, sizeof(double), cli_cmp_double);
+            qsort(vars[k].ms_y, (size_t)vars[k].n, sizeof(double), cli_cmp_double);
             if (vars[k].mode == RETRO_MODE_EXACT && !vars[k].half && !vars[k].peer) {
                 exact_ms = vars[k].ms[vars[k].n / 2];
                 exact_y = vars[k].ms_y[vars[k].n / 2];

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "timing.h"
 #include "cli.h"
 #include "hmax_pyramid.h"
 #include "kernels.h"
@@ -79,19 +80,6 @@ static int print_mesh_stats(const render_job *j)
     return 0;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
 /* One untimed frame, then n timed ones; prints what ran and the median and minimum. */
 static int time_frames(render_job *j, const player_t *p, long n)
 {
@@ -100,15 +88,15 @@ static int time_frames(render_job *j, const player_t *p, long n)
         return cli_error("render", "out of memory");
     retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
     for (long i = 0; !e && i < n; i++) {
-        double t0 = now_ms();
+        double t0 = cli_now_ms();
         e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
-        ms[i] = now_ms() - t0;
+        ms[i] = cli_now_ms() - t0;
     }
     if (e) {
         free(ms);
         return job_error("render", j, e);
     }
-    qsort(ms, (size_t)n, sizeof *ms, cmp_double);
+    qsort(ms, (size_t)n, sizeof *ms, cli_cmp_double);
     double med = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
     printf("kernel %s (family %s), mode %s, %dx%d, D %d: median %.3f ms, min %.3f ms per frame over %ld frames\n",
            j->k->name, j->k->family->name, job_mode_name(j), j->c.scr_width, j->c.scr_height, j->c.distance, med,

@@ -1,6 +1,7 @@
 /* Strict parsing of the environment (src/env.h). The library, which cannot report, falls back
  * to the safe default on a bad value (cpu.c, kernel_omp.c); the CLI calls retro_env_check()
  * first and refuses the run with one line, so the fallback is never silent there. */
+#include "errf.h"
 #include "env.h"
 
 #include <stdarg.h>
@@ -10,16 +11,6 @@
 
 #include "retro.h"
 
-static int bad(char *err, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int bad(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 /* Digits only, at most 18 of them (no overflow), an optional leading minus. No blanks, no
  * plus sign, no 0x: what strtol would quietly accept is refused. */
@@ -41,7 +32,7 @@ int retro_env_long(const char *name, long lo, long hi, long *out, char *err, siz
     if (!v)
         return 0;
     if (parse_long(v, &x) || x < lo || x > hi)
-        return bad(err, n, "environment: %s='%.40s' is not an integer in %ld..%ld", name, v, lo, hi);
+        return retro_errf(err, n, "environment: %s='%.40s' is not an integer in %ld..%ld", name, v, lo, hi);
     *out = x;
     return 1;
 }
@@ -68,7 +59,7 @@ static int check_omp_threads(char *err, size_t n)
         if (*p != ',')
             break;
     }
-    return bad(err, n, "environment: OMP_NUM_THREADS='%.40s' is not a list of thread counts "
+    return retro_errf(err, n, "environment: OMP_NUM_THREADS='%.40s' is not a list of thread counts "
                        "1..1048576 (e.g. 4 or 4,2)", v);
 }
 
@@ -77,11 +68,11 @@ int retro_env_check(char *err, size_t n)
     const char *isa = getenv("RETRO_ISA"), *shared = getenv("RETRO_SHARED");
     long chunk;
     if (isa && retro_cpu_level_index(isa) < 0)
-        return bad(err, n, "environment: RETRO_ISA='%.40s' is not none, sse2, avx2 or avx512", isa);
+        return retro_errf(err, n, "environment: RETRO_ISA='%.40s' is not none, sse2, avx2 or avx512", isa);
     if (retro_env_long("RETRO_OMP_CHUNK", 1, RETRO_MAX_SCREEN, &chunk, err, n) < 0)
         return -1;
     if (shared && (!*shared || strlen(shared) > RETRO_SHARED_MAX))
-        return bad(err, n, "environment: RETRO_SHARED must be a folder's path of 1..%d bytes",
+        return retro_errf(err, n, "environment: RETRO_SHARED must be a folder's path of 1..%d bytes",
                    RETRO_SHARED_MAX);
     return check_omp_threads(err, n);
 }

@@ -1,4 +1,5 @@
 /* Untrusted files (src/file_read.h). */
+#include "errf.h"
 #include "file_read.h"
 
 #include <errno.h>
@@ -9,16 +10,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static int fail(char *err, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 static const char *kind(mode_t m)
 {
@@ -34,20 +25,20 @@ int retro_rfile_open(retro_rfile *f, const char *path, size_t max, char *err, si
      * changes nothing for the regular files that get past the check below. */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0)
-        return fail(err, n, "%s: %s", path, strerror(errno));
+        return retro_errf(err, n, "%s: %s", path, strerror(errno));
     struct stat st;
     if (fstat(fd, &st) != 0) {
         int e = errno;
         close(fd);
-        return fail(err, n, "%s: %s", path, strerror(e));
+        return retro_errf(err, n, "%s: %s", path, strerror(e));
     }
     if (!S_ISREG(st.st_mode)) {
         close(fd);
-        return fail(err, n, "%s: is %s, not a regular file", path, kind(st.st_mode));
+        return retro_errf(err, n, "%s: is %s, not a regular file", path, kind(st.st_mode));
     }
     if (st.st_size < 0 || (unsigned long long)st.st_size > max) {
         close(fd);
-        return fail(err, n, "%s: %lld bytes, more than the %zu this file may hold", path,
+        return retro_errf(err, n, "%s: %lld bytes, more than the %zu this file may hold", path,
                     (long long)st.st_size, max);
     }
     f->fd = fd;
@@ -64,9 +55,9 @@ int retro_rfile_read(retro_rfile *f, void *buf, size_t len, char *err, size_t n)
         if (r < 0 && errno == EINTR)
             continue;
         if (r < 0)
-            return fail(err, n, "%s: read error: %s", f->path, strerror(errno));
+            return retro_errf(err, n, "%s: read error: %s", f->path, strerror(errno));
         if (r == 0)
-            return fail(err, n, "%s: truncated while read (%zu of %zu bytes)", f->path, got, len);
+            return retro_errf(err, n, "%s: truncated while read (%zu of %zu bytes)", f->path, got, len);
         got += (size_t)r;
     }
     return 0;
@@ -79,8 +70,8 @@ int retro_rfile_at_end(retro_rfile *f, char *err, size_t n)
     while ((r = read(f->fd, &c, 1)) < 0 && errno == EINTR)
         ;
     if (r < 0)
-        return fail(err, n, "%s: read error: %s", f->path, strerror(errno));
-    return r ? fail(err, n, "%s: grew while read", f->path) : 0;
+        return retro_errf(err, n, "%s: read error: %s", f->path, strerror(errno));
+    return r ? retro_errf(err, n, "%s: grew while read", f->path) : 0;
 }
 
 void retro_rfile_close(retro_rfile *f)

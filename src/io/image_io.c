@@ -12,21 +12,13 @@
 
 #include <spng.h>
 
+#include "errf.h"
 #include "file_read.h"
 #include "image_read.h"
 #include "out_file.h"
 #include "retro.h"
 #include "retro_maps.h"
 
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 /* Bytes of a PNM header read before the pixels: magic, three numbers and any comments. */
 #define PNM_HEADER_MAX 4096
@@ -43,7 +35,7 @@ static int pnm_header(const char *path, const unsigned char *b, size_t len, int 
 {
     const char *cut = whole ? "truncated or malformed header" : "header longer than 4096 bytes";
     if (len < 2 || b[0] != 'P' || b[1] != magic)
-        return fail(err, n, "%s: not a binary P%c file", path, magic);
+        return retro_errf(err, n, "%s: not a binary P%c file", path, magic);
     size_t i = 2;
     long val[3];
     for (int k = 0; k < 3; k++) {
@@ -58,28 +50,28 @@ static int pnm_header(const char *path, const unsigned char *b, size_t len, int 
             break;
         }
         if (i >= len)
-            return fail(err, n, "%s: %s", path, cut);
+            return retro_errf(err, n, "%s: %s", path, cut);
         if (b[i] < '0' || b[i] > '9')
-            return fail(err, n, "%s: truncated or malformed header", path);
+            return retro_errf(err, n, "%s: truncated or malformed header", path);
         long v = 0;
         while (i < len && b[i] >= '0' && b[i] <= '9') {
             v = v * 10 + (b[i++] - '0');
             if (v > 1000000)
-                return fail(err, n, "%s: absurd header value", path);
+                return retro_errf(err, n, "%s: absurd header value", path);
         }
         val[k] = v;
     }
     if (i >= len)
-        return fail(err, n, "%s: %s", path, cut);
+        return retro_errf(err, n, "%s: %s", path, cut);
     if (!pnm_space(b[i]))
-        return fail(err, n, "%s: truncated or malformed header", path);
+        return retro_errf(err, n, "%s: truncated or malformed header", path);
     i++;
     if (val[0] <= 0 || val[1] <= 0)
-        return fail(err, n, "%s: size %ldx%ld must be positive", path, val[0], val[1]);
+        return retro_errf(err, n, "%s: size %ldx%ld must be positive", path, val[0], val[1]);
     if (val[0] > RETRO_MAX_MAP || val[1] > RETRO_MAX_MAP)
-        return fail(err, n, "%s: absurd size %ldx%ld (limit %d)", path, val[0], val[1], RETRO_MAX_MAP);
+        return retro_errf(err, n, "%s: absurd size %ldx%ld (limit %d)", path, val[0], val[1], RETRO_MAX_MAP);
     if (val[2] != 255)
-        return fail(err, n, "%s: maxval %ld, only 255 (8-bit) is supported", path, val[2]);
+        return retro_errf(err, n, "%s: maxval %ld, only 255 (8-bit) is supported", path, val[2]);
     *w = (int)val[0];
     *h = (int)val[1];
     *data = i;
@@ -96,13 +88,13 @@ static int pnm_pixels(retro_rfile *f, const unsigned char *head, size_t hl, char
         return -1;
     size_t need = (size_t)*w * (size_t)*h * channels;
     if (f->size - off < need)
-        return fail(err, n, "%s: truncated: %zu of %zu pixel bytes", f->path, f->size - off, need);
+        return retro_errf(err, n, "%s: truncated: %zu of %zu pixel bytes", f->path, f->size - off, need);
     if (f->size - off > need)
-        return fail(err, n, "%s: %zu bytes of trailing data after the pixels (one image per file)",
+        return retro_errf(err, n, "%s: %zu bytes of trailing data after the pixels (one image per file)",
                     f->path, f->size - off - need);
     unsigned char *b = malloc(need);
     if (!b)
-        return fail(err, n, "%s: out of memory", f->path);
+        return retro_errf(err, n, "%s: out of memory", f->path);
     memcpy(b, head + off, hl - off);
     if (retro_rfile_read(f, b + (hl - off), need - (hl - off), err, n) || retro_rfile_at_end(f, err, n)) {
         free(b);
@@ -148,7 +140,7 @@ static int ppm_decode(retro_rfile *f, const unsigned char *head, size_t hl, uint
     uint32_t *o = malloc(px * sizeof *o);
     if (!o) {
         free(b);
-        return fail(err, n, "%s: out of memory", f->path);
+        return retro_errf(err, n, "%s: out of memory", f->path);
     }
     const unsigned char *p = b;
     for (size_t i = 0; i < px; i++, p += 3)
@@ -180,7 +172,7 @@ static int write_atomic(const char *path, const void *hdr, size_t hlen, const vo
     size_t tlen = staged ? slen : strlen(path) + RETRO_TMP_EXTRA;
     char *tmp = staged ? staged : malloc(tlen);
     if (!tmp)
-        return fail(err, n, "%s: out of memory", path);
+        return retro_errf(err, n, "%s: out of memory", path);
     int fd = retro_out_open(path, tmp, tlen, err, n), r = -1;
     if (fd >= 0) {
         FILE *f = fdopen(fd, "wb");
@@ -190,7 +182,7 @@ static int write_atomic(const char *path, const void *hdr, size_t hlen, const vo
             ok = 0;
         if (!ok) {
             unlink(tmp);
-            fail(err, n, "%s: cannot write: %s", path, strerror(e));
+            retro_errf(err, n, "%s: cannot write: %s", path, strerror(e));
         } else
             r = staged ? 0 : retro_out_commit(tmp, path, err, n);
     }
@@ -210,7 +202,7 @@ static int png_encode(const char *path, const unsigned char *px, int w, int h, i
 {
     spng_ctx *ctx = spng_ctx_new(SPNG_CTX_ENCODER);
     if (!ctx)
-        return fail(err, n, "%s: out of memory", path);
+        return retro_errf(err, n, "%s: out of memory", path);
     struct spng_ihdr ihdr = {0};
     ihdr.width = (uint32_t)w;
     ihdr.height = (uint32_t)h;
@@ -223,7 +215,7 @@ static int png_encode(const char *path, const unsigned char *px, int w, int h, i
     void *png = e ? NULL : spng_get_png_buffer(ctx, &len, &e);
     spng_ctx_free(ctx);
     if (!png)
-        return fail(err, n, "%s: PNG encoding failed: %s", path, spng_strerror(e));
+        return retro_errf(err, n, "%s: PNG encoding failed: %s", path, spng_strerror(e));
     int r = write_atomic(path, "", 0, png, len, staged, slen, err, n);
     free(png);
     return r;
@@ -235,7 +227,7 @@ static int write_pixels(const char *path, const unsigned char *px, int w, int h,
     if (has_ext(path, ".png"))
         return png_encode(path, px, w, h, channels, staged, slen, err, n);
     if (!has_ext(path, channels == 3 ? ".ppm" : ".pgm"))
-        return fail(err, n, "%s: unknown image type (use .%s or .png)", path,
+        return retro_errf(err, n, "%s: unknown image type (use .%s or .png)", path,
                     channels == 3 ? "ppm" : "pgm");
     char hdr[64];
     int hl = snprintf(hdr, sizeof hdr, "P%c\n%d %d\n255\n", channels == 3 ? '6' : '5', w, h);
@@ -249,7 +241,7 @@ int retro_image_stage(const char *path, const uint32_t *px, int w, int h, char *
     size_t count = (size_t)w * (size_t)h;
     unsigned char *rgb = malloc(count * 3);
     if (!rgb)
-        return fail(err, n, "%s: out of memory", path);
+        return retro_errf(err, n, "%s: out of memory", path);
     for (size_t i = 0; i < count; i++) {
         rgb[3 * i] = (unsigned char)(px[i] >> 24);
         rgb[3 * i + 1] = (unsigned char)(px[i] >> 16);

@@ -5,31 +5,23 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "errf.h"
 #include "out_file.h"
 #include "retro.h"
 #include "retro_maps.h"
 
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 int retro_map_alloc(retro_map *m, int size, char *err, size_t n)
 {
     memset(m, 0, sizeof *m);
     if (size < 1 || size > RETRO_MAX_MAP)
-        return fail(err, n, "map size %d outside 1..%d", size, RETRO_MAX_MAP);
+        return retro_errf(err, n, "map size %d outside 1..%d", size, RETRO_MAX_MAP);
     size_t cells = (size_t)size * (size_t)size;
     m->height = calloc(cells, 1);
     m->color = calloc(cells, sizeof *m->color);
     if (!m->height || !m->color) {
         retro_map_free(m);
-        return fail(err, n, "out of memory for a %dx%d map", size, size);
+        return retro_errf(err, n, "out of memory for a %dx%d map", size, size);
     }
     m->size = size;
     return 0;
@@ -48,7 +40,7 @@ int retro_map_load(const char *prefix, retro_map *m, char *err, size_t n)
     size_t len = strlen(prefix) + 8;
     char *path = malloc(len);
     if (!path)
-        return fail(err, n, "out of memory");
+        return retro_errf(err, n, "out of memory");
     uint8_t *h = NULL;
     uint32_t *c = NULL;
     int hw, hh, cw, ch, r = -1;
@@ -56,20 +48,20 @@ int retro_map_load(const char *prefix, retro_map *m, char *err, size_t n)
     if (retro_pgm_read(path, &h, &hw, &hh, err, n))
         goto out;
     if (hw != hh) {
-        fail(err, n, "%s: height map is %dx%d, not square", path, hw, hh);
+        retro_errf(err, n, "%s: height map is %dx%d, not square", path, hw, hh);
         goto out;
     }
     snprintf(path, len, "%s.ppm", prefix);
     if (access(path, F_OK) != 0)
         snprintf(path, len, "%s.png", prefix);
     if (access(path, F_OK) != 0) {
-        fail(err, n, "%s: no colour map (%s.ppm or %s.png)", prefix, prefix, prefix);
+        retro_errf(err, n, "%s: no colour map (%s.ppm or %s.png)", prefix, prefix, prefix);
         goto out;
     }
     if (retro_rgb_read(path, &c, &cw, &ch, err, n))
         goto out;
     if (cw != hw || ch != hh) {
-        fail(err, n, "%s: colour map is %dx%d but height map is %dx%d", path, cw, ch, hw, hh);
+        retro_errf(err, n, "%s: colour map is %dx%d but height map is %dx%d", path, cw, ch, hw, hh);
         goto out;
     }
     m->size = hw;
@@ -93,7 +85,7 @@ int retro_map_save(const char *prefix, const retro_map *m, int png, char *err, s
     char *path[2] = {malloc(len), malloc(len)}, *tmp[2] = {malloc(tlen), malloc(tlen)};
     int r = -1;
     if (!path[0] || !path[1] || !tmp[0] || !tmp[1]) {
-        fail(err, n, "out of memory");
+        retro_errf(err, n, "out of memory");
         goto out;
     }
     snprintf(path[0], len, "%s.pgm", prefix);

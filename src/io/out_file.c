@@ -1,4 +1,5 @@
 /* Whole-or-nothing output files (src/out_file.h). */
+#include "errf.h"
 #include "out_file.h"
 
 #include <errno.h>
@@ -9,16 +10,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static int fail(char *err, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 int retro_out_open(const char *path, char *tmp, size_t tmplen, char *err, size_t n)
 {
@@ -26,10 +17,10 @@ int retro_out_open(const char *path, char *tmp, size_t tmplen, char *err, size_t
     int dir = slash ? (int)(slash - path + 1) : 0;
     int len = snprintf(tmp, tmplen, "%.*sretro-tmp.XXXXXX", dir, path);
     if (len < 0 || (size_t)len >= tmplen)
-        return fail(err, n, "%s: path too long", path);
+        return retro_errf(err, n, "%s: path too long", path);
     int fd = mkstemp(tmp);
     if (fd < 0)
-        return fail(err, n, "%s: cannot write: %s", path, strerror(errno));
+        return retro_errf(err, n, "%s: cannot write: %s", path, strerror(errno));
     fchmod(fd, 0644);
     return fd;
 }
@@ -40,7 +31,7 @@ int retro_out_commit(const char *tmp, const char *path, char *err, size_t n)
         return 0;
     int e = errno;
     unlink(tmp);
-    return fail(err, n, "%s: cannot write: %s", path, strerror(e));
+    return retro_errf(err, n, "%s: cannot write: %s", path, strerror(e));
 }
 
 /* A destination rename cannot replace: a folder (rename's EISDIR comes too late for a pair). */
@@ -48,7 +39,7 @@ static int replaceable(const char *path, char *err, size_t n)
 {
     struct stat st;
     if (lstat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        return fail(err, n, "%s: cannot write: is a directory", path);
+        return retro_errf(err, n, "%s: cannot write: is a directory", path);
     return 0;
 }
 

@@ -7,22 +7,13 @@
 
 #include <spng.h>
 
+#include "errf.h"
 #include "image_read.h"
 #include "retro.h"
 
 /* Ancillary chunks (text, profiles) are never used; this much of them is allowed. */
 #define PNG_EXTRA ((size_t)1 << 20)
 
-static int fail(char *err, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && n)
-        vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return -1;
-}
 
 static uint32_t be32(const unsigned char *p)
 {
@@ -35,15 +26,15 @@ static int file_max(const char *path, const unsigned char *b, size_t len, size_t
                     size_t *raw_out, char *err, size_t n)
 {
     if (len < 33 || be32(b + 8) != 13 || memcmp(b + 12, "IHDR", 4))
-        return fail(err, n, "%s: bad PNG: no IHDR chunk first", path);
+        return retro_errf(err, n, "%s: bad PNG: no IHDR chunk first", path);
     uint32_t w = be32(b + 16), h = be32(b + 20);
     unsigned depth = b[24], type = b[25];
     static const unsigned channels[7] = {1, 0, 3, 1, 2, 0, 4};
     if (w < 1 || h < 1 || w > RETRO_MAX_MAP || h > RETRO_MAX_MAP)
-        return fail(err, n, "%s: PNG size %ux%u outside 1..%d", path, (unsigned)w, (unsigned)h,
+        return retro_errf(err, n, "%s: PNG size %ux%u outside 1..%d", path, (unsigned)w, (unsigned)h,
                     RETRO_MAX_MAP);
     if (type > 6 || !channels[type] || (depth != 1 && depth != 2 && depth != 4 && depth != 8 && depth != 16))
-        return fail(err, n, "%s: bad PNG: colour type %u with bit depth %u", path, type, depth);
+        return retro_errf(err, n, "%s: bad PNG: colour type %u with bit depth %u", path, type, depth);
     size_t row = 1 + ((size_t)w * channels[type] * depth + 7) / 8;
     size_t raw = row * h;
     *max = raw + raw / 8 + PNG_EXTRA;
@@ -60,10 +51,10 @@ static int chunks_end(const char *path, const unsigned char *b, size_t len, size
     *idat = 0;
     for (;;) {
         if (len - at < 12)
-            return fail(err, n, "%s: bad PNG: truncated (no IEND chunk)", path);
+            return retro_errf(err, n, "%s: bad PNG: truncated (no IEND chunk)", path);
         size_t clen = be32(b + at);
         if (clen > len - at - 12)
-            return fail(err, n, "%s: bad PNG: truncated chunk", path);
+            return retro_errf(err, n, "%s: bad PNG: truncated chunk", path);
         int iend = !memcmp(b + at + 4, "IEND", 4);
         if (!memcmp(b + at + 4, "IDAT", 4))
             *idat += clen;
@@ -72,7 +63,7 @@ static int chunks_end(const char *path, const unsigned char *b, size_t len, size
             break;
     }
     if (at != len)
-        return fail(err, n, "%s: %zu bytes of trailing data after the PNG's IEND chunk", path,
+        return retro_errf(err, n, "%s: %zu bytes of trailing data after the PNG's IEND chunk", path,
                     len - at);
     return 0;
 }
@@ -86,14 +77,14 @@ static int decode(const char *path, unsigned char *b, size_t len, uint32_t **dat
     unsigned char *rgb = NULL;
     int e;
     if (!ctx)
-        return fail(err, n, "%s: out of memory", path);
+        return retro_errf(err, n, "%s: out of memory", path);
     spng_set_image_limits(ctx, RETRO_MAX_MAP, RETRO_MAX_MAP);
     /* A compressed text chunk must not inflate into memory without bound either. */
     spng_set_chunk_limits(ctx, PNG_EXTRA, 4 * PNG_EXTRA);
     if ((e = spng_set_png_buffer(ctx, b, len)) || (e = spng_get_ihdr(ctx, &ihdr)) ||
         (e = spng_decoded_image_size(ctx, SPNG_FMT_RGB8, &size))) {
         spng_ctx_free(ctx);
-        return fail(err, n, "%s: bad PNG: %s", path, spng_strerror(e));
+        return retro_errf(err, n, "%s: bad PNG: %s", path, spng_strerror(e));
     }
     rgb = malloc(size);
     uint32_t *o = malloc((size_t)ihdr.width * ihdr.height * sizeof *o);
@@ -101,13 +92,13 @@ static int decode(const char *path, unsigned char *b, size_t len, uint32_t **dat
         free(rgb);
         free(o);
         spng_ctx_free(ctx);
-        return fail(err, n, "%s: out of memory", path);
+        return retro_errf(err, n, "%s: out of memory", path);
     }
     if ((e = spng_decode_image(ctx, rgb, size, SPNG_FMT_RGB8, SPNG_DECODE_TRNS))) {
         free(rgb);
         free(o);
         spng_ctx_free(ctx);
-        return fail(err, n, "%s: bad PNG: %s", path, spng_strerror(e));
+        return retro_errf(err, n, "%s: bad PNG: %s", path, spng_strerror(e));
     }
     size_t px = (size_t)ihdr.width * ihdr.height;
     for (size_t i = 0; i < px; i++)
@@ -127,11 +118,11 @@ int retro_png_read(retro_rfile *f, const unsigned char *head, size_t hl, uint32_
     if (file_max(f->path, head, hl, &max, &raw, err, n))
         return -1;
     if (f->size > max)
-        return fail(err, n, "%s: %zu bytes, more than a PNG of its size may hold (%zu)", f->path,
+        return retro_errf(err, n, "%s: %zu bytes, more than a PNG of its size may hold (%zu)", f->path,
                     f->size, max);
     unsigned char *b = malloc(f->size);
     if (!b)
-        return fail(err, n, "%s: out of memory", f->path);
+        return retro_errf(err, n, "%s: out of memory", f->path);
     memcpy(b, head, hl);
     int r = retro_rfile_read(f, b + hl, f->size - hl, err, n) || retro_rfile_at_end(f, err, n) ||
                     chunks_end(f->path, b, f->size, &idat, err, n)
@@ -140,7 +131,7 @@ int retro_png_read(retro_rfile *f, const unsigned char *head, size_t hl, uint32_
     /* Deflate expands at most 1032-fold: image data too short for the declared size is refused
      * before the decoder allocates that size. */
     if (!r && raw / 1032 > idat + 64)
-        r = fail(err, n, "%s: truncated: %zu bytes of image data cannot hold %zu", f->path, idat, raw);
+        r = retro_errf(err, n, "%s: truncated: %zu bytes of image data cannot hold %zu", f->path, idat, raw);
     if (!r)
         r = decode(f->path, b, f->size, data, w, h, err, n);
     free(b);
