@@ -252,8 +252,7 @@ BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
 BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) $(PEER_SRC:%.c=$(BUILD)/%.o) \
               $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
-SUBMISSION_SRC := $(shell find src include -name '*.[ch]' -not -path 'src/cli/*') scripts/make-submission.sh \
-  scripts/amalgamate-isa.sh
+SUBMISSION_SRC := $(shell find src include -name '*.[ch]' -not -path 'src/cli/*') scripts/make-submission.sh
 QUICK      ?=
 BENCH_ARGS ?=
 

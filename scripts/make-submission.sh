@@ -7,7 +7,7 @@ out=$1
 tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
-# The project's files, in dependency order; the two SIMD files are added by amalgamate-isa.sh.
+# The project's files, in dependency order; the SIMD files are added by isa_part below.
 parts="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h
   src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
   src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c"
@@ -39,15 +39,36 @@ HDR
   echo
   grep -h '^#include <' $parts | sort -u
   part() { printf '\n/* ---- %s ---- */\n' "$1"; grep -v '^#include' "$1"; }
+  # An ISA file, its functions compiled for TARGET through a pragma (the course builds with no
+  # -m flags), with the template it includes (a "*_tpl.h" of the project) spliced in at its
+  # #include line; its other includes are parts above or system headers listed at the top. No
+  # name is rewritten: every name the ISA file and the template define carries the ISA
+  # (SIMD_NAME) or is a macro the template #undefs at its end.
+  isa_part() { # FILE TARGET
+    printf '\n/* ---- %s ---- */\n' "$1"
+    printf '#if defined(__clang__)\n#pragma clang attribute push(__attribute__((target("%s"))), apply_to = function)\n' "$2"
+    printf '#else\n#pragma GCC push_options\n#pragma GCC target("%s")\n#endif\n' "$2"
+    while IFS= read -r line; do
+      case $line in
+      '#include "'*'_tpl.h"')
+        tpl=${line#'#include "'}
+        tpl=$(find src -name "${tpl%'"'}")
+        printf '/* ---- %s ---- */\n' "$tpl"
+        grep -v '^#include' "$tpl"
+        printf '/* ---- %s, continued ---- */\n' "$1" ;;
+      '#include'*) ;;
+      *) printf '%s\n' "$line" ;;
+      esac
+    done <"$1"
+    printf '#if defined(__clang__)\n#pragma clang attribute pop\n#else\n#pragma GCC pop_options\n#endif\n'
+  }
   for f in include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h \
            src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c; do
     part "$f"
   done
   # The SIMD strips, each compiled for its ISA and chosen at run time by the CPU's features.
-  printf '\n/* ---- src/arch/x86/kernel_simd_avx2.c ---- */\n'
-  sh scripts/amalgamate-isa.sh src/arch/x86/kernel_simd_avx2.c avx2_ avx2
-  printf '\n/* ---- src/arch/x86/kernel_simd_avx512.c ---- */\n'
-  sh scripts/amalgamate-isa.sh src/arch/x86/kernel_simd_avx512.c avx512_ avx2,avx512f,avx512bw,avx512vl,avx512dq
+  isa_part src/arch/x86/kernel_simd_avx2.c avx2
+  isa_part src/arch/x86/kernel_simd_avx512.c avx2,avx512f,avx512bw,avx512vl,avx512dq
   for f in src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c; do
     part "$f"
   done

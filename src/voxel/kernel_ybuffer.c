@@ -7,9 +7,9 @@
  * distance the chunk's samples lie next to each other on the map, and their spans land on
  * the same rows of out, so reads and writes stay within a few cache lines and pages, where
  * walking one column's ray to the end strides across a row of the map per sample. With the
- * power-of-two mask and the branch-free floor this measured 26-38% faster than the column
- * walk on the three default scenes (2026-11-22, one pinned core). Either order gives the same
- * bytes: each column still sees its samples nearest first.
+ * power-of-two mask and the branch-free floor this measured faster than the column walk on
+ * the three default scenes. Either order gives the same bytes: each column still sees its
+ * samples nearest first.
  *
  * Early exit: a column stops at the n-th distance once its y-buffer reaches vcap[n], the
  * highest row any sample from there on can reach. That bound is exact because the projected
@@ -158,8 +158,8 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
         if (kind == KIND_EXACT_POW2 && !fog && !bilinear) {
             /* Two passes: every open column's vf (retro_exact_row's, the same operations) with no
              * branch, so the map loads overlap instead of waiting behind a mispredicted paint
-             * branch, then the few that rise above their y-buffer paint. 27% faster on a view
-             * where no column stops early (alpine), 10% on islands (2026-11-22). The cell index
+             * branch, then the few that rise above their y-buffer paint: faster most where no
+             * column stops early (alpine), less where many do (islands). The cell index
              * is j << log2 S | i: S is a power of two here. */
             const int mask = f->S - 1, shift = __builtin_ctz((unsigned)f->S);
             const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;

@@ -1,6 +1,7 @@
 /* Shared by the SIMD kernels (kernel_simd_<isa>.c): the per-frame decision whether the vector
  * path can reproduce SEMANTICS.md exactly, the packed map it reads, and the write-counting hook
- * for vector pixel stores. The design note is at the top of kernel_simd_avx512.c. */
+ * for vector pixel stores. The strips themselves are simd_strip_tpl.h; the design is
+ * docs/KERNELS.md's "simd-sse2, simd-avx2, simd-avx512". */
 #ifndef RETRO_SIMD_COMMON_H
 #define RETRO_SIMD_COMMON_H
 
@@ -143,78 +144,10 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
  * RETRO_SKIP_FAR while probes keep failing, back to RETRO_SKIP_NEAR after a skip. */
 enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
 
-/* The strip loops and the two entry points every SIMD file shares, expanded at the end of
- * kernel_simd_<isa>.c, where exact_group(), course_column(), init_consts(), consts and LANES
- * are that file's own. The names it makes carry the ISA, so that the files concatenated into
- * one (the submission) do not collide. Each loop is one instantiation with pow2, packed and
- * fog (docs/EFFECTS.md: the one per-sample effect the vector kernels render; in mode exact a
- * group's lanes share their distance, so its weight is one scalar) as constants. */
-#define RETRO_SIMD_EXACT_STRIP(name, pow2, packed, fog)                                            \
-    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, int u0,    \
-                     int u1)                                                                        \
-    {                                                                                               \
-        if (f->simd_skip) /* skipping (retro_ctx.simd_skip): f->pyr is set */                     \
-            for (int u = u0; u < u1; u += LANES)                                                   \
-                exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog, 1);    \
-        else                                                                                        \
-            for (int u = u0; u < u1; u += LANES)                                                   \
-                exact_group(f, sf, k, u, u1 - u < LANES ? u1 - u : LANES, pow2, packed, fog, 0);    \
-    }
-#define RETRO_SIMD_COURSE_STRIP(name, packed)                                                      \
-    static void name(const retro_frame *f, const retro_simd_frame *sf, const consts *k, float *qx, \
-                     float *qy, int u0, int u1)                                                     \
-    {                                                                                               \
-        for (int u = u0; u < u1; u++)                                                               \
-            course_column(f, sf, k, qx, qy, u, packed);                                             \
-    }
-#define RETRO_SIMD_ENTRY_POINTS(isa)                                                               \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any, 0, 0, 0)                                               \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2, 1, 0, 0)                                              \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_any_packed, 0, 1, 0)                                        \
-    RETRO_SIMD_EXACT_STRIP(isa##_exact_pow2_packed, 1, 1, 0)                                       \
-    RETRO_SIMD_EXACT_STRIP(isa##_fog_any, 0, 0, 1)                                                 \
-    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2, 1, 0, 1)                                                \
-    RETRO_SIMD_EXACT_STRIP(isa##_fog_any_packed, 0, 1, 1)                                          \
-    RETRO_SIMD_EXACT_STRIP(isa##_fog_pow2_packed, 1, 1, 1)                                         \
-    RETRO_SIMD_COURSE_STRIP(isa##_course_maps, 0)                                                  \
-    RETRO_SIMD_COURSE_STRIP(isa##_course_packed, 1)                                                \
-    /* Columns [u0, u1) of a frame retro_simd_check() accepted. */                                \
-    static void isa##_render_strip(const retro_frame *f, const retro_simd_frame *sf, float *qx,    \
-                                   float *qy, int u0, int u1)                                       \
-    {                                                                                               \
-        consts k;                                                                                   \
-        init_consts(&k, f, sf);                                                                     \
-        if (f->mode == RETRO_MODE_COURSE)                                                           \
-            (sf->cells ? isa##_course_packed : isa##_course_maps)(f, sf, &k, qx, qy, u0, u1);       \
-        else if (f->fx & RETRO_FX_FOG) {                                                            \
-            if (sf->pow2_mask >= 0)                                                                 \
-                (sf->cells ? isa##_fog_pow2_packed : isa##_fog_pow2)(f, sf, &k, u0, u1);            \
-            else                                                                                    \
-                (sf->cells ? isa##_fog_any_packed : isa##_fog_any)(f, sf, &k, u0, u1);              \
-        } else if (sf->pow2_mask >= 0)                                                              \
-            (sf->cells ? isa##_exact_pow2_packed : isa##_exact_pow2)(f, sf, &k, u0, u1);            \
-        else                                                                                        \
-            (sf->cells ? isa##_exact_any_packed : isa##_exact_any)(f, sf, &k, u0, u1);              \
-    }                                                                                               \
-    void retro_strip_simd_##isa(const retro_frame *f, float *qx, float *qy, int u0, int u1)        \
-    {                                                                                               \
-        retro_simd_frame sf;                                                                        \
-        if (retro_simd_check(f, &sf))                                                               \
-            isa##_render_strip(f, &sf, qx, qy, u0, u1);                                             \
-        else                                                                                        \
-            retro_strip_ybuffer(f, qx, qy, u0, u1);                                                 \
-    }                                                                                               \
-    void retro_kernel_simd_##isa(const void *frame, retro_ctx *rc)                                 \
-    {                                                                                               \
-        const retro_frame *f = frame;                                                               \
-        retro_simd_frame sf;                                                                        \
-        if (!retro_simd_check(f, &sf)) {                                                            \
-            retro_kernel_ybuffer(f, rc);                                                            \
-            return;                                                                                 \
-        }                                                                                           \
-        retro_simd_use_packed(f, rc, &sf);                                                          \
-        retro_course_start(f, rc->qx, rc->qy);                                                      \
-        isa##_render_strip(f, &sf, rc->qx, rc->qy, 0, f->W);                                        \
-    }
+/* The names simd_strip_tpl.h makes, and the helpers of an ISA file: SIMD_NAME(x) is <isa>_x for
+ * the SIMD_ISA the file defines (sse2, avx2, avx512), expanded where it is used. */
+#define RETRO_SIMD_CAT_(a, b) a##b
+#define RETRO_SIMD_CAT(a, b) RETRO_SIMD_CAT_(a, b)
+#define SIMD_NAME(x) RETRO_SIMD_CAT(RETRO_SIMD_CAT(SIMD_ISA, _), x)
 
 #endif
