@@ -13,9 +13,9 @@
 #define ALL ((1u << RETRO_MODE_COUNT) - 1)
 #define EXACT RETRO_MODE_BIT(RETRO_MODE_EXACT)
 #define EXACT_COURSE (EXACT | RETRO_MODE_BIT(RETRO_MODE_COURSE))
-/* Effects: every one, or all but those needing code the SIMD strips lack (docs/EFFECTS.md). */
+#define EXACT_COURSE_LOD (EXACT_COURSE | RETRO_MODE_BIT(RETRO_MODE_LOD))
+/* Every effect (docs/EFFECTS.md): the SIMD strips render fog and bilinear themselves. */
 #define FX_ALL RETRO_FX_VOXEL
-#define FX_SIMD (RETRO_FX_VOXEL & ~(RETRO_FX_BILINEAR | RETRO_FX_LOD))
 /* Each ISA level includes the ones below it, as the files are compiled (cpu.c levels). */
 #define ISA_SSE2 RETRO_CPU_SSE2
 #define ISA_AVX2 (ISA_SSE2 | RETRO_CPU_AVX2)
@@ -34,15 +34,15 @@ const retro_kernel retro_kernels[] = {
     {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL, FX_ALL, VOXEL},
     {"ybuffer", retro_kernel_ybuffer, 0, ALL, RETRO_KF_WRITE_ONCE,
      "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer, FX_ALL, VOXEL},
-    {"simd-sse2", retro_kernel_simd_sse2, ISA_SSE2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", retro_strip_simd_sse2, FX_SIMD,
+    {"simd-sse2", retro_kernel_simd_sse2, ISA_SSE2, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", retro_strip_simd_sse2, FX_ALL,
      VOXEL},
-    {"simd-avx2", retro_kernel_simd_avx2, ISA_AVX2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", retro_strip_simd_avx2, FX_SIMD,
+    {"simd-avx2", retro_kernel_simd_avx2, ISA_AVX2, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", retro_strip_simd_avx2, FX_ALL,
      VOXEL},
-    {"simd-avx512", retro_kernel_simd_avx512, ISA_AVX512, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
+    {"simd-avx512", retro_kernel_simd_avx512, ISA_AVX512, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
      "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores", retro_strip_simd_avx512,
-     FX_SIMD, VOXEL},
+     FX_ALL, VOXEL},
     /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
     {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},

@@ -53,7 +53,9 @@ static int course_in_bound(const retro_frame *f)
 
 int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
 {
-    if ((f->mode != RETRO_MODE_EXACT && f->mode != RETRO_MODE_COURSE) || (f->fx & ~RETRO_FX_FOG))
+    if (f->mode != RETRO_MODE_EXACT && f->mode != RETRO_MODE_COURSE && f->mode != RETRO_MODE_LOD)
+        return 0;
+    if (f->fx & ~(unsigned)(RETRO_FX_FOG | RETRO_FX_BILINEAR))
         return 0;
     /* The vector path converts h - height from int32; below this bound h - height exceeds
      * INT_MAX for h = 255, and only the scalar path rounds the 64-bit difference once. */

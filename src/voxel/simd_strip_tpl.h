@@ -34,10 +34,12 @@
  *                                  (m = v_first(n)); lanes past them load 0 and do not store
  *   v_store_i(p, a)                all lanes to int p[SIMD_LANES]
  *   v_gather_cells(c, idx) v_gather_bytes(h, idx)   c[idx] (uint32), h[idx] (uint8) per lane
+ *   v_gather_colours(c, at, m)     c[at] (uint32) in the lanes of m at least
+ *   v_sub_f64(a, h)                (float)((double)a - h) per lane: one rounding in double, one to
+ *                                  float (bilinear's height difference, docs/EFFECTS.md)
  *   v_last_i(a)                    the last lane; V_SHIFT_UP(p, fill, k): lanes up by k (1, 2,
  *                                  4, 8), the first k from fill
  * with SIMD_ROW_STORES 1 also
- *   v_gather_colours(c, at, m)     c[at] in the lanes of m
  *   v_rows(r, y, top)              the lanes with y < r <= top
  *   v_maskstore(p, m, a)           stores the lanes of m at p (uint32)
  *   v_min_where(m, a) v_max_where(m, a)   the least / greatest lane of a in m (m not empty;
@@ -170,18 +172,92 @@ static inline simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, const 
     return v_min_i(v_max_i(v, v_zero_i()), k->H);
 }
 
-/* Steps 4-5 of SEMANTICS.md at distance d for every lane: the heights of the cells, and in *at
- * what the colours need. */
-static inline __attribute__((always_inline)) simd_i32
+/* What one distance's samples leave for projecting and painting them. */
+typedef struct {
+    simd_i32 h;      /* the cells' heights (bilinear: unused) */
+    simd_f32 dh;     /* bilinear: the filtered height minus the camera's, rounded once */
+    simd_i32 at[4];  /* what the colours need: the packed cells or their row-major indices
+                      * (bilinear: the four corners, docs/EFFECTS.md's order; else at[0]) */
+    simd_f32 tx, ty; /* bilinear: the weights */
+} SIMD_NAME(sample_t);
+
+/* Steps 4-5 of SEMANTICS.md at distance d for every lane (with bilinear, docs/EFFECTS.md's
+ * filtered height, each float operation in the order written there). */
+static inline __attribute__((always_inline)) void
 SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, simd_f32 rx,
-                  simd_f32 ry, int d, simd_i32 *at, const int pow2, const int packed)
+                  simd_f32 ry, int d, SIMD_NAME(sample_t) *s, const int pow2, const int packed, const int bilinear)
 {
     simd_f32 fd = v_set1_f((float)d);
     simd_f32 qx = v_add_f(k->x0, v_mul_f(fd, rx));
     simd_f32 qy = v_add_f(k->y0, v_mul_f(fd, ry));
-    simd_i32 i = pow2 ? SIMD_NAME(wrap_pow2)(qx, k) : SIMD_NAME(wrap_any)(qx, k);
-    simd_i32 j = pow2 ? SIMD_NAME(wrap_pow2)(qy, k) : SIMD_NAME(wrap_any)(qy, k);
-    return SIMD_NAME(heights)(f, sf, k, i, j, at, packed);
+    if (!bilinear) {
+        simd_i32 i = pow2 ? SIMD_NAME(wrap_pow2)(qx, k) : SIMD_NAME(wrap_any)(qx, k);
+        simd_i32 j = pow2 ? SIMD_NAME(wrap_pow2)(qy, k) : SIMD_NAME(wrap_any)(qy, k);
+        s->h = SIMD_NAME(heights)(f, sf, k, i, j, &s->at[0], packed);
+        return;
+    }
+    const simd_f32 half = v_set1_f(0.5f), one = v_set1_f(1.0f);
+    const simd_i32 one_i = v_set1_i(1);
+    simd_f32 px = v_sub_f(qx, half), py = v_sub_f(qy, half);
+    simd_i32 i0 = pow2 ? SIMD_NAME(wrap_pow2)(px, k) : SIMD_NAME(wrap_any)(px, k);
+    simd_i32 j0 = pow2 ? SIMD_NAME(wrap_pow2)(py, k) : SIMD_NAME(wrap_any)(py, k);
+    simd_i32 i1 = v_add_i(i0, one_i), j1 = v_add_i(j0, one_i);
+    i1 = v_keep_i(v_igt(k->S, i1), i1); /* i0 + 1 == S wraps to 0 */
+    j1 = v_keep_i(v_igt(k->S, j1), j1);
+    s->tx = v_sub_f(px, v_floor_f(px));
+    s->ty = v_sub_f(py, v_floor_f(py));
+    simd_f32 h00 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j0, &s->at[0], packed));
+    simd_f32 h10 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j0, &s->at[1], packed));
+    simd_f32 h01 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j1, &s->at[2], packed));
+    simd_f32 h11 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j1, &s->at[3], packed));
+    simd_f32 wx = v_sub_f(one, s->tx), wy = v_sub_f(one, s->ty);
+    simd_f32 hf = v_add_f(v_mul_f(v_add_f(v_mul_f(h00, wx), v_mul_f(h10, s->tx)), wy),
+                          v_mul_f(v_add_f(v_mul_f(h01, wx), v_mul_f(h11, s->tx)), s->ty));
+    s->dh = v_sub_f64(hf, (double)f->height);
+}
+
+/* The row of each lane's sample: step 6 on the height or, with bilinear, on dh. */
+static inline simd_i32 SIMD_NAME(project)(const SIMD_NAME(sample_t) *s, float kd, const SIMD_NAME(consts) *k,
+                                          const int bilinear)
+{
+    if (!bilinear)
+        return SIMD_NAME(exact_project)(s->h, kd, k);
+    simd_f32 vf = v_add_f(v_mul_f(v_set1_f(kd), s->dh), k->half_h);
+    vf = v_min_f(v_max_f(vf, v_zero_f()), k->fH);
+    return v_cvtt_i(vf);
+}
+
+/* One channel of the bilinear colour, its four corners' bytes in float: (int)(value + 0.5f). */
+static inline simd_i32 SIMD_NAME(bilerp_channel)(simd_i32 c00, simd_i32 c10, simd_i32 c01, simd_i32 c11,
+                                                 const SIMD_NAME(sample_t) *s)
+{
+    const simd_f32 one = v_set1_f(1.0f);
+    simd_f32 wx = v_sub_f(one, s->tx), wy = v_sub_f(one, s->ty);
+    simd_f32 v = v_add_f(v_mul_f(v_add_f(v_mul_f(v_cvt_f(c00), wx), v_mul_f(v_cvt_f(c10), s->tx)), wy),
+                         v_mul_f(v_add_f(v_mul_f(v_cvt_f(c01), wx), v_mul_f(v_cvt_f(c11), s->tx)), s->ty));
+    return v_cvtt_i(v_add_f(v, v_set1_f(0.5f)));
+}
+
+/* The colours of the lanes in m (bilinear: filtered per channel, docs/EFFECTS.md). */
+static inline simd_i32 SIMD_NAME(colours)(const retro_frame *f, const SIMD_NAME(sample_t) *s, simd_mask m,
+                                          const int packed, const int bilinear)
+{
+    if (!bilinear)
+        return packed ? v_and_i(s->at[0], v_set1_i((int)RETRO_SIMD_COLOR_MASK))
+                      : v_gather_colours(f->color_map, s->at[0], m);
+    const simd_i32 byte = v_set1_i(0xff);
+    simd_i32 c[4];
+    for (int i = 0; i < 4; i++) /* a packed cell's low byte is its height: the shifts drop it */
+        c[i] = packed ? s->at[i] : v_gather_colours(f->color_map, s->at[i], m);
+#define SIMD_BYTE(x, sh) v_and_i(v_srli_i(x, sh), byte)
+    simd_i32 r = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 24), SIMD_BYTE(c[1], 24), SIMD_BYTE(c[2], 24),
+                                           SIMD_BYTE(c[3], 24), s);
+    simd_i32 g = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 16), SIMD_BYTE(c[1], 16), SIMD_BYTE(c[2], 16),
+                                           SIMD_BYTE(c[3], 16), s);
+    simd_i32 b = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 8), SIMD_BYTE(c[1], 8), SIMD_BYTE(c[2], 8),
+                                           SIMD_BYTE(c[3], 8), s);
+#undef SIMD_BYTE
+    return v_or_i(v_or_i(v_slli_i(r, 24), v_slli_i(g, 16)), v_slli_i(b, 8));
 }
 
 /* The colour of one lane, from its entry of what heights() left in at. */
@@ -191,14 +267,6 @@ static inline uint32_t SIMD_NAME(colour_of)(const retro_frame *f, uint32_t at, c
 }
 
 #if SIMD_ROW_STORES
-/* The colours of the lanes in m, from what heights() left in at. */
-static inline simd_i32 SIMD_NAME(colours)(const retro_frame *f, simd_i32 at, simd_mask m, const int packed)
-{
-    if (packed)
-        return v_and_i(at, v_set1_i((int)RETRO_SIMD_COLOR_MASK));
-    return v_gather_colours(f->color_map, at, m);
-}
-
 /* Rows lo..hi of columns u0.. get colour where y < row <= top, one masked store per row. */
 static void SIMD_NAME(paint_rows)(const retro_frame *f, int u0, int lo, int hi, simd_i32 y, simd_i32 top,
                                   simd_i32 colour)
@@ -229,77 +297,86 @@ static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
 }
 #endif
 
-/* Columns u0..u0+n-1 (n <= SIMD_LANES), front to back: docs/KERNELS.md's mode exact. Lanes
- * past n start full (y = H), so they neither paint nor hold the group back. With skip, the
- * group probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps over
- * the distances retro_skip_group proves no lane paints; h then holds a distance the loop no
- * longer wants, and hd says which. */
+/* Columns u0..u0+width-1 (width <= SIMD_LANES), front to back: docs/KERNELS.md's mode exact.
+ * Lanes past width start full (y = H), so they neither paint nor hold the group back. The n-th
+ * distance is n, or dist[n] in mode lod (lod), where vcap is indexed by n as well. With skip,
+ * the group probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps
+ * over the distances retro_skip_group proves no lane paints; s then holds a distance the loop
+ * no longer wants, and sn says which. */
 static inline __attribute__((always_inline)) void
 SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
-                       int n, const int pow2, const int packed, const int fog, const int skip)
+                       int width, const int pow2, const int packed, const int fog, const int skip, const int lod,
+                       const int bilinear)
 {
-    const simd_mask live = v_first(n);
-    simd_f32 rx = v_load_first_f(f->rx + u0, n, live), ry = v_load_first_f(f->ry + u0, n, live);
+    const simd_mask live = v_first(width);
+    const int n_end = lod ? f->ndist : f->D;
+    simd_f32 rx = v_load_first_f(f->rx + u0, width, live), ry = v_load_first_f(f->ry + u0, width, live);
     simd_i32 y = v_select_i(live, v_zero_i(), k->H);
-    simd_i32 at, h = SIMD_NAME(sample)(f, sf, k, rx, ry, 1, &at, pow2, packed);
+    SIMD_NAME(sample_t) s, s_d;
+    /* mode lod: dist[n] exists for n < n_end only; a sample past it is loaded but never used */
+#define SIMD_DIST(n) (lod ? f->dist[(n) < n_end ? (n) : 1] : (n))
+    SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 ? SIMD_DIST(1) : 1, &s, pow2, packed, bilinear);
     retro_simd_grp g;
-    int hd = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    int sn = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
     if (skip)
-        RETRO_SIMD_GRP_INIT(&g, f, u0, n);
-    for (int d = 1; d < f->D;) {
-        if (!v_bits(v_igt(v_set1_i(f->vcap[d]), y)))
+        RETRO_SIMD_GRP_INIT(&g, f, u0, width);
+    for (int n = 1; n < n_end;) {
+        if (!v_bits(v_igt(v_set1_i(f->vcap[n]), y)))
             break;
-        if (skip && d >= probe) { /* some lane has y < vcap[d] <= H, so the minimum is < H */
+        if (skip && n >= probe) { /* some lane has y < vcap[n] <= H, so the minimum is < H */
             int ys[SIMD_LANES];
             v_store_i(ys, y);
-            const int e = RETRO_SIMD_PROBE(&g, f, d, ys, pow2);
-            if (e > d) {
-                d = e;
+            const int e = RETRO_SIMD_PROBE(&g, f, n, ys, pow2);
+            if (e > n) {
+                n = e;
                 probe = e;
                 batch = RETRO_SIMD_SKIP_NEAR;
                 continue;
             }
-            probe = d + batch;
+            probe = n + batch;
             batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
         }
-        if (skip && hd != d)
-            h = SIMD_NAME(sample)(f, sf, k, rx, ry, d, &at, pow2, packed);
-        simd_i32 v = SIMD_NAME(exact_project)(h, f->kd[d], k), at_d = at;
+        const int d = SIMD_DIST(n);
+        if (skip && sn != n)
+            SIMD_NAME(sample)(f, sf, k, rx, ry, d, &s, pow2, packed, bilinear);
+        simd_i32 v = SIMD_NAME(project)(&s, f->kd[d], k, bilinear);
+        s_d = s;
         /* The next distance's loads issue before the paint branch, so they are in flight when
-         * it mispredicts. d = D samples a valid cell that is never used. */
-        h = SIMD_NAME(sample)(f, sf, k, rx, ry, d + 1, &at, pow2, packed);
-        hd = d + 1;
+         * it mispredicts. n + 1 = D samples a valid cell that is never used. */
+        SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + 1), &s, pow2, packed, bilinear);
+        sn = n + 1;
         const simd_mask up = v_igt(v, y);
-        SIMD_COUNT_LANES(evaluated, n);
+        SIMD_COUNT_LANES(evaluated, width);
         SIMD_COUNT_LANES(painting, __builtin_popcount(v_bits(up)));
         if (v_bits(up)) {
 #if SIMD_ROW_STORES
             /* Lanes that do not rise must not widen the rows. */
             int lo = v_min_where(up, y) + 1, hi = v_max_where(up, v);
-            simd_i32 c = SIMD_NAME(colours)(f, at_d, up, packed);
+            simd_i32 c = SIMD_NAME(colours)(f, &s_d, up, packed, bilinear);
             SIMD_NAME(paint_rows)(f, u0, lo, hi, y, v, fog ? SIMD_NAME(fog_colours)(c, f->fog[d], f->sky) : c);
 #else
             int ys[SIMD_LANES], vs[SIMD_LANES];
-            uint32_t as[SIMD_LANES];
+            uint32_t cs[SIMD_LANES];
             v_store_i(ys, y);
             v_store_i(vs, v);
-            v_store_i((int *)as, at_d);
+            v_store_i((int *)cs, bilinear ? SIMD_NAME(colours)(f, &s_d, up, packed, 1) : s_d.at[0]);
             for (unsigned m = v_bits(up); m; m &= m - 1) {
                 int l = __builtin_ctz(m);
-                uint32_t c = SIMD_NAME(colour_of)(f, as[l], packed);
+                uint32_t c = bilinear ? cs[l] : SIMD_NAME(colour_of)(f, cs[l], packed);
                 retro_simd_span(f, u0 + l, ys[l], vs[l], fog ? retro_fog(c, f->sky, f->fog[d]) : c);
             }
 #endif
             y = v_max_i(y, v);
         }
-        d++;
+        n++;
     }
+#undef SIMD_DIST
 #if SIMD_ROW_STORES
     SIMD_NAME(paint_rows)(f, u0, v_min_where(live, y) + 1, f->H, y, k->H, v_set1_i((int)f->sky));
 #else
     int ys[SIMD_LANES];
     v_store_i(ys, y);
-    for (int l = 0; l < n; l++)
+    for (int l = 0; l < width; l++)
         retro_simd_span(f, u0 + l, ys[l], f->H, f->sky);
 #endif
 }
@@ -378,28 +455,48 @@ SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const
     }
 }
 
-/* One instantiation per (mode, power-of-two S, packed map, fog), so the inner loops carry no
- * tests of them; skipping (f->simd_skip, opt-in: docs/SKIPPING.md) is one more. */
-#define SIMD_EXACT_STRIP(name, pow2, packed, fog)                                                                 \
+/* One instantiation per (lod, bilinear, fog, power-of-two S, packed map), so the inner loops
+ * carry no tests of them; skipping (f->simd_skip, opt-in: docs/SKIPPING.md, mode exact without
+ * bilinear) is one more. The bilinear ones test the packed map per sample: four loads each
+ * outweigh it. */
+#define SIMD_EXACT_STRIP(name, lod, bilinear, fog, pow2, packed)                                                  \
     static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,     \
                                 int u0, int u1)                                                                    \
     {                                                                                                              \
-        if (f->simd_skip)                                                                                          \
+        const int can_skip = !(lod) && !(bilinear);                                                                \
+        if (can_skip && f->simd_skip)                                                                              \
             for (int u = u0; u < u1; u += SIMD_LANES)                                                             \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog, 1); \
+                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog,  \
+                                       can_skip, lod, bilinear);                                                   \
         else                                                                                                       \
             for (int u = u0; u < u1; u += SIMD_LANES)                                                             \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog, 0); \
+                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog,  \
+                                       0, lod, bilinear);                                                          \
     }
-SIMD_EXACT_STRIP(exact_any, 0, 0, 0)
-SIMD_EXACT_STRIP(exact_pow2, 1, 0, 0)
-SIMD_EXACT_STRIP(exact_any_packed, 0, 1, 0)
-SIMD_EXACT_STRIP(exact_pow2_packed, 1, 1, 0)
-SIMD_EXACT_STRIP(fog_any, 0, 0, 1)
-SIMD_EXACT_STRIP(fog_pow2, 1, 0, 1)
-SIMD_EXACT_STRIP(fog_any_packed, 0, 1, 1)
-SIMD_EXACT_STRIP(fog_pow2_packed, 1, 1, 1)
+#define SIMD_EXACT_STRIPS(lod, fog)                                                                                \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_any, lod, 0, fog, 0, 0)                                                         \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_pow2, lod, 0, fog, 1, 0)                                                        \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_any_packed, lod, 0, fog, 0, 1)                                                  \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_pow2_packed, lod, 0, fog, 1, 1)                                                 \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_bilinear_any, lod, 1, fog, 0, sf->cells != NULL)                                \
+    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_bilinear_pow2, lod, 1, fog, 1, sf->cells != NULL)
+SIMD_EXACT_STRIPS(0, 0)
+SIMD_EXACT_STRIPS(0, 1)
+SIMD_EXACT_STRIPS(1, 0)
+SIMD_EXACT_STRIPS(1, 1)
+#undef SIMD_EXACT_STRIPS
 #undef SIMD_EXACT_STRIP
+
+typedef void (*SIMD_NAME(exact_fn))(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
+                                    int u0, int u1);
+/* [lod][fog][bilinear][pow2][packed] */
+#define SIMD_ROW(lod, fog)                                                                                               \
+    {{{SIMD_NAME(strip_lod##lod##_fog##fog##_any), SIMD_NAME(strip_lod##lod##_fog##fog##_any_packed)}, {SIMD_NAME(strip_lod##lod##_fog##fog##_pow2), SIMD_NAME(strip_lod##lod##_fog##fog##_pow2_packed)}}, \
+     {{SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_any), SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_any)},                                        \
+      {SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_pow2), SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_pow2)}}}
+static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {{SIMD_ROW(0, 0), SIMD_ROW(0, 1)},
+                                                                         {SIMD_ROW(1, 0), SIMD_ROW(1, 1)}};
+#undef SIMD_ROW
 
 static void SIMD_NAME(course_maps)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
                                    float *qx, float *qy, int u0, int u1)
@@ -421,18 +518,12 @@ static void SIMD_NAME(render_strip)(const retro_frame *f, const retro_simd_frame
 {
     SIMD_NAME(consts) k;
     SIMD_NAME(init_consts)(&k, f, sf);
-    const int pow2 = sf->pow2_mask >= 0;
-    if (f->mode == RETRO_MODE_COURSE)
+    if (f->mode == RETRO_MODE_COURSE) {
         (sf->cells ? SIMD_NAME(course_packed) : SIMD_NAME(course_maps))(f, sf, &k, qx, qy, u0, u1);
-    else if (f->fx & RETRO_FX_FOG) {
-        if (pow2)
-            (sf->cells ? SIMD_NAME(fog_pow2_packed) : SIMD_NAME(fog_pow2))(f, sf, &k, u0, u1);
-        else
-            (sf->cells ? SIMD_NAME(fog_any_packed) : SIMD_NAME(fog_any))(f, sf, &k, u0, u1);
-    } else if (pow2)
-        (sf->cells ? SIMD_NAME(exact_pow2_packed) : SIMD_NAME(exact_pow2))(f, sf, &k, u0, u1);
-    else
-        (sf->cells ? SIMD_NAME(exact_any_packed) : SIMD_NAME(exact_any))(f, sf, &k, u0, u1);
+        return;
+    }
+    SIMD_NAME(exact_strips)[f->mode == RETRO_MODE_LOD][(f->fx & RETRO_FX_FOG) != 0][(f->fx & RETRO_FX_BILINEAR) != 0]
+                           [sf->pow2_mask >= 0][sf->cells != NULL](f, sf, &k, u0, u1);
 }
 
 void RETRO_SIMD_CAT(retro_strip_simd_, SIMD_ISA)(const retro_frame *f, float *qx, float *qy, int u0, int u1)
@@ -510,6 +601,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef v_gather_cells
 #undef v_gather_bytes
 #undef v_last_i
+#undef v_sub_f64
 #undef V_SHIFT_UP
 #undef v_gather_colours
 #undef v_rows

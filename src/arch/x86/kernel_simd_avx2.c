@@ -69,6 +69,7 @@
 #define v_store_i(p, a) _mm256_storeu_si256((__m256i *)(p), a)
 #define v_gather_cells(c, idx) SIMD_NAME(gather_cells)(c, idx)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm256_extract_epi32(a, 7)
 #define V_SHIFT_UP(p, fill, k)                                                                                   \
     _mm256_blend_epi32(_mm256_permutevar8x32_epi32(                                                              \
@@ -113,6 +114,15 @@ static inline __m256i SIMD_NAME(gather_bytes)(const uint8_t *h, __m256i idx)
     uint32_t x[SIMD_LANES] __attribute__((aligned(32)));
     _mm256_store_si256((__m256i *)x, idx);
     return _mm256_setr_epi32(h[x[0]], h[x[1]], h[x[2]], h[x[3]], h[x[4]], h[x[5]], h[x[6]], h[x[7]]);
+}
+
+/* (float)((double)a - h) per lane, in two halves of 4 doubles. */
+static inline __m256 SIMD_NAME(sub_f64)(__m256 a, double h)
+{
+    const __m256d hd = _mm256_set1_pd(h);
+    __m128 lo = _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_cvtps_pd(_mm256_castps256_ps128(a)), hd));
+    __m128 hi = _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_cvtps_pd(_mm256_extractf128_ps(a, 1)), hd));
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
 }
 
 #include "simd_strip_tpl.h"

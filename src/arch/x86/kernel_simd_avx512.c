@@ -62,6 +62,7 @@
 #define v_store_i(p, a) _mm512_storeu_si512(p, a)
 #define v_gather_cells(c, idx) _mm512_i32gather_epi32(idx, (const void *)(c), 4)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_alignr_epi32(a, a, 15)))
 #define V_SHIFT_UP(p, fill, k) _mm512_alignr_epi32(p, fill, 16 - (k))
 #define v_gather_colours(c, at, m) _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, at, (const void *)(c), 4)
@@ -86,6 +87,15 @@ static inline __m512i SIMD_NAME(gather_bytes)(const uint8_t *h, __m512i idx)
     _mm512_store_si512(x, idx);
     return _mm512_setr_epi32(h[x[0]], h[x[1]], h[x[2]], h[x[3]], h[x[4]], h[x[5]], h[x[6]], h[x[7]], h[x[8]],
                              h[x[9]], h[x[10]], h[x[11]], h[x[12]], h[x[13]], h[x[14]], h[x[15]]);
+}
+
+/* (float)((double)a - h) per lane, in two halves of 8 doubles. */
+static inline __m512 SIMD_NAME(sub_f64)(__m512 a, double h)
+{
+    const __m512d hd = _mm512_set1_pd(h);
+    __m256 lo = _mm512_cvtpd_ps(_mm512_sub_pd(_mm512_cvtps_pd(_mm512_castps512_ps256(a)), hd));
+    __m256 hi = _mm512_cvtpd_ps(_mm512_sub_pd(_mm512_cvtps_pd(_mm512_extractf32x8_ps(a, 1)), hd));
+    return _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1);
 }
 
 #include "simd_strip_tpl.h"

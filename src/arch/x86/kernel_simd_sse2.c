@@ -64,6 +64,8 @@
 #define v_store_i(p, a) _mm_storeu_si128((__m128i *)(p), a)
 #define v_gather_cells(c, idx) SIMD_NAME(gather_cells)(c, idx)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_gather_colours(c, at, m) ((void)(m), SIMD_NAME(gather_cells)(c, at)) /* every lane */
+#define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm_shuffle_epi32(a, _MM_SHUFFLE(3, 3, 3, 3)))
 #define V_SHIFT_UP(p, fill, k)                                                                                   \
     _mm_or_si128(_mm_slli_si128(p, 4 * (k)), _mm_and_si128(fill, _mm_setr_epi32(-(0 < (k)), -(1 < (k)), -(2 < (k)), 0)))
@@ -130,6 +132,15 @@ static inline __m128i SIMD_NAME(gather_bytes)(const uint8_t *h, __m128i idx)
     uint32_t x[SIMD_LANES] __attribute__((aligned(16)));
     _mm_store_si128((__m128i *)x, idx);
     return _mm_setr_epi32(h[x[0]], h[x[1]], h[x[2]], h[x[3]]);
+}
+
+/* (float)((double)a - h) per lane, in two halves of 2 doubles. */
+static inline __m128 SIMD_NAME(sub_f64)(__m128 a, double h)
+{
+    const __m128d hd = _mm_set1_pd(h);
+    __m128 lo = _mm_cvtpd_ps(_mm_sub_pd(_mm_cvtps_pd(a), hd));
+    __m128 hi = _mm_cvtpd_ps(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(a, a)), hd));
+    return _mm_movelh_ps(lo, hi);
 }
 
 #include "simd_strip_tpl.h"
