@@ -68,7 +68,7 @@ void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 /* The same counts for the counting build of simd-avx512 (kernel_simd_avx512.c compiled with
  * RETRO_COUNT_SAMPLES): a sample is a live lane at a distance its group evaluated, painting a
  * lane that rose; probes and windows are retro_skip_group's. Frames the vector path does not
- * render (bilinear, lod) go to the uncounted scalar kernel and count nothing. */
+ * render (retro_simd_check) go to the uncounted scalar kernel and count nothing. */
 extern retro_sample_counts retro_simd_counts;
 void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
 
