@@ -39,27 +39,31 @@ HDR
   echo
   grep -h '^#include <' $parts | sort -u
   part() { printf '\n/* ---- %s ---- */\n' "$1"; grep -v '^#include' "$1"; }
-  # An ISA file, its functions compiled for TARGET through a pragma (the course builds with no
-  # -m flags), with the template it includes (a "*_tpl.h" of the project) spliced in at its
-  # #include line; its other includes are parts above or system headers listed at the top. No
-  # name is rewritten: every name the ISA file and the template define carries the ISA
-  # (SIMD_NAME) or is a macro the template #undefs at its end.
-  isa_part() { # FILE TARGET
-    printf '\n/* ---- %s ---- */\n' "$1"
-    printf '#if defined(__clang__)\n#pragma clang attribute push(__attribute__((target("%s"))), apply_to = function)\n' "$2"
-    printf '#else\n#pragma GCC push_options\n#pragma GCC target("%s")\n#endif\n' "$2"
+  # A file's text with the templates it includes (the project's "*_tpl.h") spliced in at their
+  # #include lines, recursively; its other includes are parts above or system headers listed at
+  # the top. Names are not rewritten: every name an ISA file and the templates define carries the
+  # ISA (SIMD_NAME) or is a macro the template #undefs at its end.
+  splice() { # FILE
     while IFS= read -r line; do
       case $line in
       '#include "'*'_tpl.h"')
         tpl=${line#'#include "'}
         tpl=$(find src -name "${tpl%'"'}")
         printf '/* ---- %s ---- */\n' "$tpl"
-        grep -v '^#include' "$tpl"
-        printf '/* ---- %s, continued ---- */\n' "$1" ;;
+        (splice "$tpl") # a subshell: the recursion keeps this call's tpl
+        printf '/* ---- end of %s ---- */\n' "$tpl" ;;
       '#include'*) ;;
       *) printf '%s\n' "$line" ;;
       esac
     done <"$1"
+  }
+  # An ISA file, its functions compiled for TARGET through a pragma (the course builds with no
+  # -m flags).
+  isa_part() { # FILE TARGET
+    printf '\n/* ---- %s ---- */\n' "$1"
+    printf '#if defined(__clang__)\n#pragma clang attribute push(__attribute__((target("%s"))), apply_to = function)\n' "$2"
+    printf '#else\n#pragma GCC push_options\n#pragma GCC target("%s")\n#endif\n' "$2"
+    splice "$1"
     printf '#if defined(__clang__)\n#pragma clang attribute pop\n#else\n#pragma GCC pop_options\n#endif\n'
   }
   for f in include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h \

@@ -1,0 +1,117 @@
+/* Part of simd_strip_tpl.h, whose contract applies, included by it once per ISA file: a group
+ * of adjacent columns in modes exact and lod, painting by masked row stores or column spans. */
+
+#if SIMD_ROW_STORES
+/* Rows lo..hi of columns u0.. get colour where y < row <= top, one masked store per row. */
+static void SIMD_NAME(paint_rows)(const retro_frame *f, int u0, int lo, int hi, simd_i32 y, simd_i32 top,
+                                  simd_i32 colour)
+{
+    const size_t W = (size_t)f->W;
+    size_t at = (size_t)(f->H - lo) * W + (size_t)u0;
+    simd_i32 r = v_set1_i(lo);
+    for (int row = lo; row <= hi; row++, at -= W) {
+        simd_mask m = v_rows(r, y, top);
+        v_maskstore(f->out + at, m, colour);
+        RETRO_SIMD_COUNT(f->out, at, v_bits(m));
+        r = v_add_i(r, v_set1_i(1));
+    }
+}
+
+/* Fog toward the sky by weight F/256 (docs/EFFECTS.md) on every lane: R|B and G in 16-bit
+ * halves, x*(256-F) + s*F + 128 stays below 2^16, so 16-bit products are exact and the bytes
+ * equal retro_fog()'s. */
+static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
+{
+    const simd_i32 low = v_set1_i(0x00ff00ff), byte = v_set1_i(0xff);
+    const simd_i32 wc = v_set1_16((short)(256 - F)), ws = v_set1_16((short)F), half = v_set1_16(128);
+    simd_i32 rb = v_and_i(v_srli_i(c, 8), low), g = v_and_i(v_srli_i(c, 16), byte);
+    simd_i32 srb = v_set1_i((int)((sky >> 8) & 0x00ff00ffu)), sg = v_set1_i((int)((sky >> 16) & 0xffu));
+    rb = v_srli_16(v_add_16(v_add_16(v_mullo_16(rb, wc), v_mullo_16(srb, ws)), half), 8);
+    g = v_srli_16(v_add_16(v_add_16(v_mullo_16(g, wc), v_mullo_16(sg, ws)), half), 8);
+    return v_or_i(v_slli_i(rb, 8), v_slli_i(g, 16));
+}
+#endif
+
+/* Columns u0..u0+width-1 (width <= SIMD_LANES), front to back: docs/KERNELS.md's mode exact.
+ * Lanes past width start full (y = H), so they neither paint nor hold the group back. The n-th
+ * distance is n, or dist[n] in mode lod (lod), where vcap is indexed by n as well. With skip,
+ * the group probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps
+ * over the distances retro_skip_group proves no lane paints; s then holds a distance the loop
+ * no longer wants, and sn says which. */
+static inline __attribute__((always_inline)) void
+SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
+                       int width, const int pow2, const int packed, const int fog, const int skip, const int lod,
+                       const int bilinear)
+{
+    const simd_mask live = v_first(width);
+    const int n_end = lod ? f->ndist : f->D;
+    simd_f32 rx = v_load_first_f(f->rx + u0, width, live), ry = v_load_first_f(f->ry + u0, width, live);
+    simd_i32 y = v_select_i(live, v_zero_i(), k->H);
+    SIMD_NAME(sample_t) s, s_d;
+    /* mode lod: dist[n] exists for n < n_end only; a sample past it is loaded but never used */
+#define SIMD_DIST(n) (lod ? f->dist[(n) < n_end ? (n) : 1] : (n))
+    SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 ? SIMD_DIST(1) : 1, &s, pow2, packed, bilinear);
+    retro_simd_grp g;
+    int sn = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    if (skip)
+        RETRO_SIMD_GRP_INIT(&g, f, u0, width);
+    for (int n = 1; n < n_end;) {
+        if (!v_bits(v_igt(v_set1_i(f->vcap[n]), y)))
+            break;
+        if (skip && n >= probe) { /* some lane has y < vcap[n] <= H, so the minimum is < H */
+            int ys[SIMD_LANES];
+            v_store_i(ys, y);
+            const int e = RETRO_SIMD_PROBE(&g, f, n, ys, pow2);
+            if (e > n) {
+                n = e;
+                probe = e;
+                batch = RETRO_SIMD_SKIP_NEAR;
+                continue;
+            }
+            probe = n + batch;
+            batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
+        }
+        const int d = SIMD_DIST(n);
+        if (skip && sn != n)
+            SIMD_NAME(sample)(f, sf, k, rx, ry, d, &s, pow2, packed, bilinear);
+        simd_i32 v = SIMD_NAME(project)(&s, f->kd[d], k, bilinear);
+        s_d = s;
+        /* The next distance's loads issue before the paint branch, so they are in flight when
+         * it mispredicts. n + 1 = D samples a valid cell that is never used. */
+        SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + 1), &s, pow2, packed, bilinear);
+        sn = n + 1;
+        const simd_mask up = v_igt(v, y);
+        SIMD_COUNT_LANES(evaluated, width);
+        SIMD_COUNT_LANES(painting, __builtin_popcount(v_bits(up)));
+        if (v_bits(up)) {
+#if SIMD_ROW_STORES
+            /* Lanes that do not rise must not widen the rows. */
+            int lo = v_min_where(up, y) + 1, hi = v_max_where(up, v);
+            simd_i32 c = SIMD_NAME(colours)(f, &s_d, up, packed, bilinear);
+            SIMD_NAME(paint_rows)(f, u0, lo, hi, y, v, fog ? SIMD_NAME(fog_colours)(c, f->fog[d], f->sky) : c);
+#else
+            int ys[SIMD_LANES], vs[SIMD_LANES];
+            uint32_t cs[SIMD_LANES];
+            v_store_i(ys, y);
+            v_store_i(vs, v);
+            v_store_i((int *)cs, bilinear ? SIMD_NAME(colours)(f, &s_d, up, packed, 1) : s_d.at[0]);
+            for (unsigned m = v_bits(up); m; m &= m - 1) {
+                int l = __builtin_ctz(m);
+                uint32_t c = bilinear ? cs[l] : SIMD_NAME(colour_of)(f, cs[l], packed);
+                retro_simd_span(f, u0 + l, ys[l], vs[l], fog ? retro_fog(c, f->sky, f->fog[d]) : c);
+            }
+#endif
+            y = v_max_i(y, v);
+        }
+        n++;
+    }
+#undef SIMD_DIST
+#if SIMD_ROW_STORES
+    SIMD_NAME(paint_rows)(f, u0, v_min_where(live, y) + 1, f->H, y, k->H, v_set1_i((int)f->sky));
+#else
+    int ys[SIMD_LANES];
+    v_store_i(ys, y);
+    for (int l = 0; l < width; l++)
+        retro_simd_span(f, u0 + l, ys[l], f->H, f->sky);
+#endif
+}
