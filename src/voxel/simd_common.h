@@ -149,5 +149,8 @@ enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
 #define RETRO_SIMD_CAT_(a, b) a##b
 #define RETRO_SIMD_CAT(a, b) RETRO_SIMD_CAT_(a, b)
 #define SIMD_NAME(x) RETRO_SIMD_CAT(RETRO_SIMD_CAT(SIMD_ISA, _), x)
+/* The helpers of the strips' inner loops: inlined even where the compiler would rather not,
+ * so each instantiation's constant choices fold away. */
+#define RETRO_SIMD_INLINE static inline __attribute__((always_inline))
 
 #endif

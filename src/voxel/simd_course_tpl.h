@@ -35,7 +35,7 @@ static inline int SIMD_NAME(course_scan)(const retro_frame *f, int u, int y, sim
 
 /* The rows of distances d..d+LANES-1 (those below D; the others get v = 0) of the column whose
  * positions qx, qy hold, and in *at what the scan needs for colours. */
-static inline __attribute__((always_inline)) simd_i32
+RETRO_SIMD_INLINE simd_i32
 SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
                          const float *qx, const float *qy, int d, simd_i32 *at, const int packed)
 {
@@ -52,7 +52,7 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
 /* Column u of mode course: docs/KERNELS.md's lanes = distances. qx, qy hold the column's
  * positions on entry and the next column's on return: every accumulator is sampled (until the
  * early exit), then all advance, the additions of SEMANTICS.md in their order. */
-static inline __attribute__((always_inline)) void
+RETRO_SIMD_INLINE void
 SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, float *qx,
                          float *qy, int u, const int packed)
 {

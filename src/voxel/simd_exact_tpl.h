@@ -38,7 +38,7 @@ static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
  * the group probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps
  * over the distances retro_skip_group proves no lane paints; s then holds a distance the loop
  * no longer wants, and sn says which. */
-static inline __attribute__((always_inline)) void
+RETRO_SIMD_INLINE void
 SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
                        int width, const int pow2, const int packed, const int fog, const int skip, const int lod,
                        const int bilinear)

@@ -40,7 +40,7 @@ static void SIMD_NAME(init_consts)(SIMD_NAME(consts) *k, const retro_frame *f, c
 }
 
 /* floor(q) mod S for a power-of-two S: the two's-complement mask is the non-negative remainder. */
-static inline simd_i32 SIMD_NAME(wrap_pow2)(simd_f32 q, const SIMD_NAME(consts) *k)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(wrap_pow2)(simd_f32 q, const SIMD_NAME(consts) *k)
 {
     return v_and_i(v_floor_i(q), k->wrap);
 }
@@ -48,7 +48,7 @@ static inline simd_i32 SIMD_NAME(wrap_pow2)(simd_f32 q, const SIMD_NAME(consts) 
 /* floor(q) mod S for any S, in float and exact (docs/KERNELS.md, "Wrap"): |floor(q)| < 2^23,
  * so n = floor(floor(q) / S) computed with 1/S is off by at most one, r = floor(q) - n*S is
  * an exact integer, and one conditional +S and one -S put it in [0, S). */
-static inline simd_i32 SIMD_NAME(wrap_any)(simd_f32 q, const SIMD_NAME(consts) *k)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(wrap_any)(simd_f32 q, const SIMD_NAME(consts) *k)
 {
     simd_f32 fl = v_floor_f(q);
     simd_f32 n = v_floor_f(v_mul_f(fl, k->inv_S));
@@ -60,7 +60,7 @@ static inline simd_i32 SIMD_NAME(wrap_any)(simd_f32 q, const SIMD_NAME(consts) *
 
 /* (int)float_mod(q, S - 1) for |q| < 2^23 (docs/KERNELS.md, "Course wrap"): fmodf by one
  * truncated quotient and one correction, then the course's float_mod steps as written. */
-static inline simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(consts) *k)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(consts) *k)
 {
     const simd_f32 zero = v_zero_f(), K = k->fK;
     simd_f32 n = v_trunc_f(v_mul_f(q, k->inv_K));
@@ -78,7 +78,7 @@ static inline simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(consts
 
 /* The heights of cells (i, j). *at receives what the colours need: the packed cell itself, or
  * the row-major index when the maps are read directly. */
-static inline simd_i32 SIMD_NAME(heights)(const retro_frame *f, const retro_simd_frame *sf,
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(heights)(const retro_frame *f, const retro_simd_frame *sf,
                                           const SIMD_NAME(consts) *k, simd_i32 i, simd_i32 j, simd_i32 *at,
                                           const int packed)
 {
@@ -95,7 +95,7 @@ static inline simd_i32 SIMD_NAME(heights)(const retro_frame *f, const retro_simd
 
 /* SEMANTICS.md step 6 on every lane; clamping to [0, H] before truncating is the same
  * three-way case, since truncation is the floor for 0 <= vf. */
-static inline simd_i32 SIMD_NAME(exact_project)(simd_i32 h, float kd, const SIMD_NAME(consts) *k)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(exact_project)(simd_i32 h, float kd, const SIMD_NAME(consts) *k)
 {
     simd_f32 dh = v_cvt_f(v_sub_i(h, k->height));
     simd_f32 vf = v_add_f(v_mul_f(v_set1_f(kd), dh), k->half_h);
@@ -104,7 +104,7 @@ static inline simd_i32 SIMD_NAME(exact_project)(simd_i32 h, float kd, const SIMD
 }
 
 /* retro_course_row() on every lane, clamped at RETRO_SIMD_ROW_CLAMP first to stay in int. */
-static inline simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, const SIMD_NAME(consts) *k)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, const SIMD_NAME(consts) *k)
 {
     simd_f32 dh = v_cvt_f(v_sub_i(h, k->height));
     simd_f32 t = v_div_f(v_mul_f(k->cw2, dh), fd);
@@ -124,7 +124,7 @@ typedef struct {
 
 /* Steps 4-5 of SEMANTICS.md at distance d for every lane (with bilinear, docs/EFFECTS.md's
  * filtered height, each float operation in the order written there). */
-static inline __attribute__((always_inline)) void
+RETRO_SIMD_INLINE void
 SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, simd_f32 rx,
                   simd_f32 ry, int d, SIMD_NAME(sample_t) *s, const int pow2, const int packed, const int bilinear)
 {
@@ -158,7 +158,7 @@ SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_N
 }
 
 /* The row of each lane's sample: step 6 on the height or, with bilinear, on dh. */
-static inline simd_i32 SIMD_NAME(project)(const SIMD_NAME(sample_t) *s, float kd, const SIMD_NAME(consts) *k,
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(project)(const SIMD_NAME(sample_t) *s, float kd, const SIMD_NAME(consts) *k,
                                           const int bilinear)
 {
     if (!bilinear)
@@ -180,7 +180,7 @@ static inline simd_i32 SIMD_NAME(bilerp_channel)(simd_i32 c00, simd_i32 c10, sim
 }
 
 /* The colours of the lanes in m (bilinear: filtered per channel, docs/EFFECTS.md). */
-static inline simd_i32 SIMD_NAME(colours)(const retro_frame *f, const SIMD_NAME(sample_t) *s, simd_mask m,
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(colours)(const retro_frame *f, const SIMD_NAME(sample_t) *s, simd_mask m,
                                           const int packed, const int bilinear)
 {
     if (!bilinear)
@@ -202,7 +202,7 @@ static inline simd_i32 SIMD_NAME(colours)(const retro_frame *f, const SIMD_NAME(
 }
 
 /* The colour of one lane, from its entry of what heights() left in at. */
-static inline uint32_t SIMD_NAME(colour_of)(const retro_frame *f, uint32_t at, const int packed)
+RETRO_SIMD_INLINE uint32_t SIMD_NAME(colour_of)(const retro_frame *f, uint32_t at, const int packed)
 {
     return packed ? at & RETRO_SIMD_COLOR_MASK : f->color_map[at];
 }

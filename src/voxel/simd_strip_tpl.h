@@ -72,27 +72,29 @@ retro_sample_counts retro_simd_counts;
  * carry no tests of them; skipping (f->simd_skip, opt-in: docs/SKIPPING.md, mode exact without
  * bilinear) is one more. The bilinear ones test the packed map per sample: four loads each
  * outweigh it. */
-#define SIMD_EXACT_STRIP(name, lod, bilinear, fog, pow2, packed)                                                  \
-    static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,     \
-                                int u0, int u1)                                                                    \
-    {                                                                                                              \
-        const int can_skip = !(lod) && !(bilinear);                                                                \
-        if (can_skip && f->simd_skip)                                                                              \
-            for (int u = u0; u < u1; u += SIMD_LANES)                                                             \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog,  \
-                                       can_skip, lod, bilinear);                                                   \
-        else                                                                                                       \
-            for (int u = u0; u < u1; u += SIMD_LANES)                                                             \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2, packed, fog,  \
-                                       0, lod, bilinear);                                                          \
+#define SIMD_EXACT_STRIP(name, lod, bilinear, fog, pow2, packed)                                        \
+    static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf,                       \
+                                const SIMD_NAME(consts) *k, int u0, int u1)                              \
+    {                                                                                                    \
+        const int can_skip = !(lod) && !(bilinear);                                                      \
+        if (can_skip && f->simd_skip)                                                                    \
+            for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
+                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
+                                       packed, fog, can_skip, lod, bilinear);                            \
+        else                                                                                             \
+            for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
+                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
+                                       packed, fog, 0, lod, bilinear);                                   \
     }
-#define SIMD_EXACT_STRIPS(lod, fog)                                                                                \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_any, lod, 0, fog, 0, 0)                                                         \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_pow2, lod, 0, fog, 1, 0)                                                        \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_any_packed, lod, 0, fog, 0, 1)                                                  \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_pow2_packed, lod, 0, fog, 1, 1)                                                 \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_bilinear_any, lod, 1, fog, 0, sf->cells != NULL)                                \
-    SIMD_EXACT_STRIP(strip_lod##lod##_fog##fog##_bilinear_pow2, lod, 1, fog, 1, sf->cells != NULL)
+/* The strips of one (lod, fog), named strip_lod<0|1>_fog<0|1>_<map reads>. */
+#define SIMD_STRIP_NAME(lod, fog, rest) strip_lod##lod##_fog##fog##_##rest
+#define SIMD_EXACT_STRIPS(lod, fog)                                                                      \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, any), lod, 0, fog, 0, 0)                                 \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, pow2), lod, 0, fog, 1, 0)                                \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, any_packed), lod, 0, fog, 0, 1)                          \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, pow2_packed), lod, 0, fog, 1, 1)                         \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, bilinear_any), lod, 1, fog, 0, sf->cells != NULL)        \
+    SIMD_EXACT_STRIP(SIMD_STRIP_NAME(lod, fog, bilinear_pow2), lod, 1, fog, 1, sf->cells != NULL)
 SIMD_EXACT_STRIPS(0, 0)
 SIMD_EXACT_STRIPS(0, 1)
 SIMD_EXACT_STRIPS(1, 0)
@@ -100,16 +102,24 @@ SIMD_EXACT_STRIPS(1, 1)
 #undef SIMD_EXACT_STRIPS
 #undef SIMD_EXACT_STRIP
 
-typedef void (*SIMD_NAME(exact_fn))(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
-                                    int u0, int u1);
+typedef void (*SIMD_NAME(exact_fn))(const retro_frame *f, const retro_simd_frame *sf,
+                                    const SIMD_NAME(consts) *k, int u0, int u1);
+/* The strips of one (lod, fog) as [bilinear][pow2][packed]; the bilinear ones test the map
+ * themselves. */
+#define SIMD_STRIP(lod, fog, rest) SIMD_NAME(SIMD_STRIP_NAME(lod, fog, rest))
+#define SIMD_STRIPS_OF(lod, fog)                                                                         \
+    {{{SIMD_STRIP(lod, fog, any), SIMD_STRIP(lod, fog, any_packed)},                                    \
+      {SIMD_STRIP(lod, fog, pow2), SIMD_STRIP(lod, fog, pow2_packed)}},                                  \
+     {{SIMD_STRIP(lod, fog, bilinear_any), SIMD_STRIP(lod, fog, bilinear_any)},                         \
+      {SIMD_STRIP(lod, fog, bilinear_pow2), SIMD_STRIP(lod, fog, bilinear_pow2)}}}
 /* [lod][fog][bilinear][pow2][packed] */
-#define SIMD_ROW(lod, fog)                                                                                               \
-    {{{SIMD_NAME(strip_lod##lod##_fog##fog##_any), SIMD_NAME(strip_lod##lod##_fog##fog##_any_packed)}, {SIMD_NAME(strip_lod##lod##_fog##fog##_pow2), SIMD_NAME(strip_lod##lod##_fog##fog##_pow2_packed)}}, \
-     {{SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_any), SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_any)},                                        \
-      {SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_pow2), SIMD_NAME(strip_lod##lod##_fog##fog##_bilinear_pow2)}}}
-static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {{SIMD_ROW(0, 0), SIMD_ROW(0, 1)},
-                                                                         {SIMD_ROW(1, 0), SIMD_ROW(1, 1)}};
-#undef SIMD_ROW
+static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {
+    {SIMD_STRIPS_OF(0, 0), SIMD_STRIPS_OF(0, 1)},
+    {SIMD_STRIPS_OF(1, 0), SIMD_STRIPS_OF(1, 1)},
+};
+#undef SIMD_STRIPS_OF
+#undef SIMD_STRIP
+#undef SIMD_STRIP_NAME
 
 static void SIMD_NAME(course_maps)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
                                    float *qx, float *qy, int u0, int u1)
@@ -135,8 +145,9 @@ static void SIMD_NAME(render_strip)(const retro_frame *f, const retro_simd_frame
         (sf->cells ? SIMD_NAME(course_packed) : SIMD_NAME(course_maps))(f, sf, &k, qx, qy, u0, u1);
         return;
     }
-    SIMD_NAME(exact_strips)[f->mode == RETRO_MODE_LOD][(f->fx & RETRO_FX_FOG) != 0][(f->fx & RETRO_FX_BILINEAR) != 0]
-                           [sf->pow2_mask >= 0][sf->cells != NULL](f, sf, &k, u0, u1);
+    const int lod = f->mode == RETRO_MODE_LOD, fog = (f->fx & RETRO_FX_FOG) != 0;
+    const int bilinear = (f->fx & RETRO_FX_BILINEAR) != 0;
+    SIMD_NAME(exact_strips)[lod][fog][bilinear][sf->pow2_mask >= 0][sf->cells != NULL](f, sf, &k, u0, u1);
 }
 
 void RETRO_SIMD_CAT(retro_strip_simd_, SIMD_ISA)(const retro_frame *f, float *qx, float *qy, int u0, int u1)

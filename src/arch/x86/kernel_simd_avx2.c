@@ -71,10 +71,11 @@
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm256_extract_epi32(a, 7)
-#define V_SHIFT_UP(p, fill, k)                                                                                   \
-    _mm256_blend_epi32(_mm256_permutevar8x32_epi32(                                                              \
-                           p, _mm256_setr_epi32(AVX2_FROM(0, k), AVX2_FROM(1, k), AVX2_FROM(2, k), AVX2_FROM(3, k), \
-                                                AVX2_FROM(4, k), AVX2_FROM(5, k), AVX2_FROM(6, k), AVX2_FROM(7, k))), \
+#define V_SHIFT_UP(p, fill, k)                                                                           \
+    _mm256_blend_epi32(_mm256_permutevar8x32_epi32(p, _mm256_setr_epi32(AVX2_FROM(0, k), AVX2_FROM(1, k),   \
+                                                                        AVX2_FROM(2, k), AVX2_FROM(3, k),   \
+                                                                        AVX2_FROM(4, k), AVX2_FROM(5, k),   \
+                                                                        AVX2_FROM(6, k), AVX2_FROM(7, k))), \
                        fill, (1 << (k)) - 1)
 #define v_gather_colours(c, at, m) ((void)(m), SIMD_NAME(gather_cells)(c, at)) /* every lane */
 #define v_rows(r, y, top) _mm256_andnot_si256(_mm256_cmpgt_epi32(r, top), _mm256_cmpgt_epi32(r, y))
@@ -86,14 +87,14 @@
 #define v_add_16(a, b) _mm256_add_epi16(a, b)
 #define v_srli_16(a, n) _mm256_srli_epi16(a, n)
 
-static inline int SIMD_NAME(hmin)(__m256i a)
+RETRO_SIMD_INLINE int SIMD_NAME(hmin)(__m256i a)
 {
     __m128i m = _mm_min_epi32(_mm256_castsi256_si128(a), _mm256_extracti128_si256(a, 1));
     m = _mm_min_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
     return _mm_cvtsi128_si32(_mm_min_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(2, 3, 0, 1))));
 }
 
-static inline int SIMD_NAME(hmax)(__m256i a)
+RETRO_SIMD_INLINE int SIMD_NAME(hmax)(__m256i a)
 {
     __m128i m = _mm_max_epi32(_mm256_castsi256_si128(a), _mm256_extracti128_si256(a, 1));
     m = _mm_max_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
@@ -101,7 +102,7 @@ static inline int SIMD_NAME(hmax)(__m256i a)
 }
 
 /* c[idx] per lane: 8 scalar loads. */
-static inline __m256i SIMD_NAME(gather_cells)(const uint32_t *c, __m256i idx)
+RETRO_SIMD_INLINE __m256i SIMD_NAME(gather_cells)(const uint32_t *c, __m256i idx)
 {
     uint32_t x[SIMD_LANES] __attribute__((aligned(32)));
     _mm256_store_si256((__m256i *)x, idx);
@@ -109,7 +110,7 @@ static inline __m256i SIMD_NAME(gather_cells)(const uint32_t *c, __m256i idx)
                              (int)c[x[6]], (int)c[x[7]]);
 }
 
-static inline __m256i SIMD_NAME(gather_bytes)(const uint8_t *h, __m256i idx)
+RETRO_SIMD_INLINE __m256i SIMD_NAME(gather_bytes)(const uint8_t *h, __m256i idx)
 {
     uint32_t x[SIMD_LANES] __attribute__((aligned(32)));
     _mm256_store_si256((__m256i *)x, idx);
@@ -117,7 +118,7 @@ static inline __m256i SIMD_NAME(gather_bytes)(const uint8_t *h, __m256i idx)
 }
 
 /* (float)((double)a - h) per lane, in two halves of 4 doubles. */
-static inline __m256 SIMD_NAME(sub_f64)(__m256 a, double h)
+RETRO_SIMD_INLINE __m256 SIMD_NAME(sub_f64)(__m256 a, double h)
 {
     const __m256d hd = _mm256_set1_pd(h);
     __m128 lo = _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_cvtps_pd(_mm256_castps256_ps128(a)), hd));

@@ -75,13 +75,13 @@
 #define v_add_16(a, b) _mm512_add_epi16(a, b)
 #define v_srli_16(a, n) _mm512_srli_epi16(a, n)
 
-static inline __mmask16 SIMD_NAME(first)(int n)
+RETRO_SIMD_INLINE __mmask16 SIMD_NAME(first)(int n)
 {
     return (__mmask16)(n < SIMD_LANES ? (1u << (n > 0 ? n : 0)) - 1 : 0xffffu);
 }
 
 /* Bytes are not gathered: 16 scalar loads. */
-static inline __m512i SIMD_NAME(gather_bytes)(const uint8_t *h, __m512i idx)
+RETRO_SIMD_INLINE __m512i SIMD_NAME(gather_bytes)(const uint8_t *h, __m512i idx)
 {
     uint32_t x[SIMD_LANES] __attribute__((aligned(64)));
     _mm512_store_si512(x, idx);
@@ -90,7 +90,7 @@ static inline __m512i SIMD_NAME(gather_bytes)(const uint8_t *h, __m512i idx)
 }
 
 /* (float)((double)a - h) per lane, in two halves of 8 doubles. */
-static inline __m512 SIMD_NAME(sub_f64)(__m512 a, double h)
+RETRO_SIMD_INLINE __m512 SIMD_NAME(sub_f64)(__m512 a, double h)
 {
     const __m512d hd = _mm512_set1_pd(h);
     __m256 lo = _mm512_cvtpd_ps(_mm512_sub_pd(_mm512_cvtps_pd(_mm512_castps512_ps256(a)), hd));

@@ -68,16 +68,17 @@
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm_shuffle_epi32(a, _MM_SHUFFLE(3, 3, 3, 3)))
 #define V_SHIFT_UP(p, fill, k)                                                                                   \
-    _mm_or_si128(_mm_slli_si128(p, 4 * (k)), _mm_and_si128(fill, _mm_setr_epi32(-(0 < (k)), -(1 < (k)), -(2 < (k)), 0)))
+    _mm_or_si128(_mm_slli_si128(p, 4 * (k)),                                                            \
+                 _mm_and_si128(fill, _mm_setr_epi32(-(0 < (k)), -(1 < (k)), -(2 < (k)), 0)))
 
 /* floor(q) for |q| < 2^31: truncation, minus one where it rounded a negative q up. */
-static inline __m128i SIMD_NAME(floor_epi32)(__m128 q)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(floor_epi32)(__m128 q)
 {
     __m128i t = _mm_cvttps_epi32(q);
     return _mm_add_epi32(t, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), q)));
 }
 
-static inline __m128i SIMD_NAME(mullo_epi32)(__m128i a, __m128i b)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(mullo_epi32)(__m128i a, __m128i b)
 {
     __m128i even = _mm_mul_epu32(a, b);
     __m128i odd = _mm_mul_epu32(_mm_srli_epi64(a, 32), _mm_srli_epi64(b, 32));
@@ -85,20 +86,20 @@ static inline __m128i SIMD_NAME(mullo_epi32)(__m128i a, __m128i b)
                               _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
 }
 
-static inline __m128i SIMD_NAME(max_epi32)(__m128i a, __m128i b)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(max_epi32)(__m128i a, __m128i b)
 {
     __m128i gt = _mm_cmpgt_epi32(a, b);
     return _mm_or_si128(_mm_and_si128(gt, a), _mm_andnot_si128(gt, b));
 }
 
-static inline __m128i SIMD_NAME(min_epi32)(__m128i a, __m128i b)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(min_epi32)(__m128i a, __m128i b)
 {
     __m128i gt = _mm_cmpgt_epi32(a, b);
     return _mm_or_si128(_mm_and_si128(gt, b), _mm_andnot_si128(gt, a));
 }
 
 /* The first n floats at p (all 4 when n >= 4), zeros after them. */
-static inline __m128 SIMD_NAME(load_first)(const float *p, int n)
+RETRO_SIMD_INLINE __m128 SIMD_NAME(load_first)(const float *p, int n)
 {
     if (n >= SIMD_LANES)
         return _mm_loadu_ps(p);
@@ -120,14 +121,14 @@ static inline void SIMD_NAME(store_first)(float *p, int n, __m128 x)
         p[l] = t[l];
 }
 
-static inline __m128i SIMD_NAME(gather_cells)(const uint32_t *c, __m128i idx)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(gather_cells)(const uint32_t *c, __m128i idx)
 {
     uint32_t x[SIMD_LANES] __attribute__((aligned(16)));
     _mm_store_si128((__m128i *)x, idx);
     return _mm_setr_epi32((int)c[x[0]], (int)c[x[1]], (int)c[x[2]], (int)c[x[3]]);
 }
 
-static inline __m128i SIMD_NAME(gather_bytes)(const uint8_t *h, __m128i idx)
+RETRO_SIMD_INLINE __m128i SIMD_NAME(gather_bytes)(const uint8_t *h, __m128i idx)
 {
     uint32_t x[SIMD_LANES] __attribute__((aligned(16)));
     _mm_store_si128((__m128i *)x, idx);
@@ -135,7 +136,7 @@ static inline __m128i SIMD_NAME(gather_bytes)(const uint8_t *h, __m128i idx)
 }
 
 /* (float)((double)a - h) per lane, in two halves of 2 doubles. */
-static inline __m128 SIMD_NAME(sub_f64)(__m128 a, double h)
+RETRO_SIMD_INLINE __m128 SIMD_NAME(sub_f64)(__m128 a, double h)
 {
     const __m128d hd = _mm_set1_pd(h);
     __m128 lo = _mm_cvtpd_ps(_mm_sub_pd(_mm_cvtps_pd(a), hd));
