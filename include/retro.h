@@ -97,6 +97,9 @@ typedef struct retro_frame {
     const struct retro_pyramid *pyr;
     /* with pyr: the SIMD strips skip too, per group of columns (retro_ctx.simd_skip) */
     int simd_skip;
+    /* the strip the threaded kernels run: the fastest of the strip table (src/voxel/strips.h)
+     * for this frame's mode and effects at the CPU's ISA level, chosen once by setup */
+    void (*strip)(const struct retro_frame *f, float *qx, float *qy, int u0, int u1);
 } retro_frame;
 
 /* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
@@ -186,6 +189,7 @@ enum {
 /* A family of kernels: kernels that render the same frames from the same frame constants and
  * are checked against one reference kernel. voxel is the first (src/voxel/family.c). */
 struct retro_kernel;
+struct retro_strip; /* src/voxel/strips.h */
 
 typedef struct retro_family {
     const char *name;                /* "voxel": `retro kernels` groups by it */
@@ -214,7 +218,7 @@ typedef struct retro_kernel {
     unsigned modes;       /* RETRO_MODE_BIT() of its family's modes it renders */
     unsigned flags;       /* RETRO_KF_* */
     const char *summary;  /* one line for `retro kernels` */
-    retro_strip_fn strip; /* column-strip entry point, or NULL (naive, threaded kernels) */
+    const struct retro_strip *strip; /* its row of the strip table, or NULL (naive, threaded) */
     unsigned fx;          /* every effect (RETRO_FX_*) it renders */
     const retro_family *family;
 } retro_kernel;

@@ -22,7 +22,7 @@ for cc in gcc clang; do
     fi
     [ -s "$tmp/cc.log" ] && fail "$cc $flags warns: $(head -n 3 "$tmp/cc.log")"
     if [ -d "$shared/course" ]; then
-      for isa in avx512 avx2 none; do # every strip the dispatch can pick
+      for isa in avx512 avx2 sse2 none; do # every level the strip table can pick at
         (cd "$tmp" && RETRO_ISA=$isa "./$name" selftest "$(cd "$OLDPWD" && cd "$shared" && pwd)") \
           >"$tmp/self.log" 2>&1 || fail "$cc $flags isa $isa course tests: $(grep -v '^ok' "$tmp/self.log" | head -n 3)"
       done
@@ -52,7 +52,7 @@ while read -r W H D x y z a; do
   shift $((n % $#)); map=$1; n=$((n + 1))
   "$retro" render "$map" -k naive -m course -s "${W}x$H" -d "$D" -p "$x,$y" -z "$z" -a "$a" -o "$tmp/ref.ppm" ||
     { fail "retro render $map pose $n"; continue; }
-  isa=$(echo "avx512 avx2 none" | cut -d' ' -f$((n % 3 + 1)))
+  isa=$(echo "avx512 avx2 sse2 none" | cut -d' ' -f$((n % 4 + 1)))
   RETRO_ISA=$isa "$tmp/gccO3" frame "$map" "$W" "$H" "$D" "$x" "$y" "$z" "$a" "$tmp/got.ppm" &&
     cmp -s "$tmp/ref.ppm" "$tmp/got.ppm" || fail "pose $n ($map ${W}x$H D $D at $x,$y z $z a $a, isa $isa) differs from naive"
 done <"$tmp/poses"

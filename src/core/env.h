@@ -17,7 +17,7 @@ int retro_env_long(const char *name, long lo, long hi, long *out, char *err, siz
 /* Checks every variable the project reads (RETRO_ISA, RETRO_OMP_CHUNK, RETRO_SHARED,
  * OMP_NUM_THREADS): 0, or -1 with err for the first bad one. */
 int retro_env_check(char *err, size_t errlen);
-/* Index of ISA level name in none, sse2, avx2, avx512, or -1 (src/cpu.c). */
+/* Index of ISA level name in retro_isa_names, or -1 (src/core/cpu.c). */
 int retro_cpu_level_index(const char *name);
 
 #endif

@@ -6,20 +6,19 @@
 #include <string.h>
 
 #include "kernels.h"
+#include "strips.h"
 #include "mesh_family.h"
 #include "retro_scene.h"
 
 /* Every mode, the accuracy variants of docs/ACCURACY.md included. */
 #define ALL ((1u << RETRO_MODE_COUNT) - 1)
-#define EXACT RETRO_MODE_BIT(RETRO_MODE_EXACT)
-#define EXACT_COURSE (EXACT | RETRO_MODE_BIT(RETRO_MODE_COURSE))
-/* Effects: every one, or all but those needing code the SIMD strips lack (docs/EFFECTS.md). */
+/* The single-thread voxel rows with a strip take its ISA level, modes and effects from the
+ * strip table (strips.h); tests/test_strips.c checks they agree. */
 #define FX_ALL RETRO_FX_VOXEL
-#define FX_SIMD (RETRO_FX_VOXEL & ~(RETRO_FX_BILINEAR | RETRO_FX_LOD))
-/* Each ISA level includes the ones below it, as the files are compiled (cpu.c levels). */
-#define ISA_SSE2 RETRO_CPU_SSE2
-#define ISA_AVX2 (ISA_SSE2 | RETRO_CPU_AVX2)
-#define ISA_AVX512 (ISA_AVX2 | RETRO_CPU_AVX512)
+#define STRIP(id) &retro_strips[RETRO_STRIP_##id]
+/* Each ISA level includes the ones below it (isa.h). */
+#define ISA_AVX2 RETRO_ISA_CPU_AVX2
+#define ISA_AVX512 RETRO_ISA_CPU_AVX512
 #define VOXEL &retro_family_voxel
 #define MESH &retro_family_mesh
 #define MESH_MODES ((1u << RETRO_MESH_MODE_COUNT) - 1)
@@ -32,18 +31,19 @@ const size_t retro_family_count = sizeof retro_families / sizeof retro_families[
 
 const retro_kernel retro_kernels[] = {
     {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL, FX_ALL, VOXEL},
-    {"ybuffer", retro_kernel_ybuffer, 0, ALL, RETRO_KF_WRITE_ONCE,
-     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer, FX_ALL, VOXEL},
-    {"simd-sse2", retro_kernel_simd_sse2, ISA_SSE2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", retro_strip_simd_sse2, FX_SIMD,
-     VOXEL},
-    {"simd-avx2", retro_kernel_simd_avx2, ISA_AVX2, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", retro_strip_simd_avx2, FX_SIMD,
-     VOXEL},
-    {"simd-avx512", retro_kernel_simd_avx512, ISA_AVX512, EXACT_COURSE, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores", retro_strip_simd_avx512,
-     FX_SIMD, VOXEL},
-    /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
+    {"ybuffer", retro_kernel_ybuffer, 0, RETRO_STRIP_MODES_ALL, RETRO_KF_WRITE_ONCE,
+     "front to back with a per-column y-buffer, each pixel written once", STRIP(ybuffer), FX_ALL, VOXEL},
+    {"simd-sse2", retro_kernel_simd_sse2, RETRO_ISA_CPU_SSE2, RETRO_STRIP_MODES_SIMD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", STRIP(simd_sse2),
+     RETRO_STRIP_FX_SIMD, VOXEL},
+    {"simd-avx2", retro_kernel_simd_avx2, RETRO_ISA_CPU_AVX2, RETRO_STRIP_MODES_SIMD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", STRIP(simd_avx2),
+     RETRO_STRIP_FX_SIMD, VOXEL},
+    {"simd-avx512", retro_kernel_simd_avx512, RETRO_ISA_CPU_AVX512, RETRO_STRIP_MODES_SIMD,
+     RETRO_KF_WRITE_ONCE, "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores",
+     STRIP(simd_avx512), RETRO_STRIP_FX_SIMD, VOXEL},
+    /* The threaded kernels run the frame's strip (retro_frame.strip), chosen by frame setup
+     * from the strip table, not from these rows. */
     {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
@@ -170,17 +170,6 @@ const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *f
 const retro_kernel *retro_kernel_best(retro_mode mode)
 {
     return retro_kernel_best_fx(mode, NULL);
-}
-
-retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx)
-{
-    retro_strip_fn best = NULL;
-    for (size_t i = 0; i < retro_kernel_count; i++) {
-        const retro_kernel *k = &retro_kernels[i];
-        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode) && !(fx & ~k->fx))
-            best = k->strip;
-    }
-    return best;
 }
 
 retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c)

@@ -72,7 +72,7 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
             rc->tscratch_cap = need;
         }
     }
-    pt_job job = {f, retro_best_strip(f->mode, f->fx), 0, (f->W + PT_CHUNK - 1) / PT_CHUNK};
+    pt_job job = {f, f->strip, 0, (f->W + PT_CHUNK - 1) / PT_CHUNK};
     atomic_init(&job.next, 0);
     pt_worker w[PT_MAX_THREADS];
     pthread_t tid[PT_MAX_THREADS];

@@ -7,6 +7,7 @@
 #include "retro_internal.h"
 #include "kernels.h"
 #include "retro_scene.h"
+#include "strips.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
 #include "mesh_family.h"
@@ -407,6 +408,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         return RETRO_ENOMEM;
     f->simd_skip = f->pyr && rc->simd_skip;
 #endif
+    f->strip = retro_strip_best(mode, f->fx); /* once per frame, for the threaded kernels */
     return RETRO_OK;
 }
 
