@@ -130,6 +130,7 @@ typedef struct retro_ctx {
     float *tscratch;    /* pthreads kernel: per-thread course accumulators */
     size_t tscratch_cap;
     void *pool;         /* owned by parallel kernels */
+    struct retro_pt_pool *pt_pool; /* the pthreads kernel's workers, kept until retro_ctx_free */
     /* SIMD kernels (src/simd_map.c): colour | height packed into one uint32 per cell, so one
      * load or gather fetches both. Rebuilt only when the map pointers or S change; like the
      * height maximum, call retro_ctx_map_changed() after editing either map in place. */

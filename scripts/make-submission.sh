@@ -11,10 +11,10 @@ mkdir -p "$(dirname "$out")"
 # The strips' dispatch is the library's own: the strip table (src/voxel/strips.h, strips.c) and
 # the ISA levels (src/core/isa.h, cpu.c, which also reads RETRO_ISA), so it is kept nowhere else.
 head="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/core/isa.h
-  src/core/env.h src/core/errf.h src/voxel/strips.h src/voxel/simd_common.h
+  src/core/env.h src/core/errf.h src/voxel/strips.h src/voxel/simd_common.h src/threads/pt_pool.h
   src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
   src/core/cpu.c src/core/errf.c src/core/env.c src/voxel/strips.c"
-tail="src/threads/kernel_pthreads.c src/core/course.c"
+tail="src/threads/pt_pool.c src/threads/kernel_pthreads.c src/core/course.c"
 parts="$head src/arch/x86/kernel_simd_sse2.c src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c $tail"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
@@ -26,9 +26,10 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
  * front to back with a per-column y-buffer (each pixel written exactly once, no sky fill),
  * 16 (AVX-512), 8 (AVX2) or 4 (SSE2) distances per vector chosen at run time by the CPU's
  * features (RETRO_ISA=none|sse2|avx2 lowers the level),
- * columns split in chunks across threads (pthreads, in libc since glibc 2.34), each thread
- * replaying the course's accumulated positions exactly. Builds with -Wall -Wextra -pedantic,
- * linked with -lm only. */
+ * columns split in chunks across threads kept for the life of the process (pthreads, in libc
+ * since glibc 2.34; where they are not linked, one thread), each thread replaying the course's
+ * accumulated positions exactly. RETRO_PTHREADS=N sets the thread count (default 2).
+ * Builds with -Wall -Wextra -pedantic, linked with -lm only. */
 #define RETRO_SUBMISSION 1
 #include "render.h"
 

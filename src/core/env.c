@@ -75,6 +75,8 @@ int retro_env_check(char *err, size_t n)
     }
     if (retro_env_long("RETRO_OMP_CHUNK", 1, RETRO_MAX_SCREEN, &chunk, err, n) < 0)
         return -1;
+    if (retro_env_long("RETRO_PTHREADS", 1, RETRO_PTHREADS_MAX, &chunk, err, n) < 0)
+        return -1;
     if (shared && (!*shared || strlen(shared) > RETRO_SHARED_MAX))
         return retro_errf(err, n, "environment: RETRO_SHARED must be a folder's path of 1..%d bytes",
                    RETRO_SHARED_MAX);

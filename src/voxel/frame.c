@@ -7,6 +7,7 @@
 #include "retro_internal.h"
 #include "kernels.h"
 #include "retro_scene.h"
+#include "pt_pool.h"
 #include "strips.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
@@ -44,6 +45,7 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->fx_key);
     free(rc->fog);
     free(rc->simd_cells);
+    retro_pt_pool_free(rc->pt_pool);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
     retro_mesh_state_free(rc->mesh);
