@@ -92,8 +92,8 @@ typedef struct retro_frame {
      * at the n'-th distance (distance n, or dist[n] in mode lod); no sample from there on
      * can rise above it. The entry past the last distance is 0. */
     const int *vcap;
-    /* mode exact: the map's maximum-height pyramid when occlusion skipping is on
-     * (src/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
+    /* modes exact and lod: the map's maximum-height pyramid when occlusion skipping is on
+     * (src/voxel/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
     const struct retro_pyramid *pyr;
     /* with pyr: the SIMD strips skip too, per group of columns (retro_ctx.simd_skip) */
     int simd_skip;

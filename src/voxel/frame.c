@@ -67,7 +67,7 @@ void retro_ctx_map_changed(retro_ctx *rc)
 }
 
 #ifndef RETRO_SUBMISSION
-/* The pyramid for a frame of mode exact that may skip: built when the map is new; NULL when
+/* The pyramid for a frame of mode exact or lod that may skip: built when the map is new; NULL when
  * skipping is off, the map too small to have levels, or the memory short (-1). */
 static int skip_pyramid(retro_ctx *rc, const uint8_t *hm, int S, const struct retro_pyramid **out)
 {
@@ -406,7 +406,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     }
     f->simd_skip = 0;
 #ifndef RETRO_SUBMISSION
-    if (mode == RETRO_MODE_EXACT && skip_pyramid(rc, hm, S, &f->pyr))
+    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && skip_pyramid(rc, hm, S, &f->pyr))
         return RETRO_ENOMEM;
     f->simd_skip = f->pyr && rc->simd_skip;
 #endif
