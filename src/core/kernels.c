@@ -45,7 +45,7 @@ const retro_kernel retro_kernels[] = {
     /* The threaded kernels run the frame's strip (retro_frame.strip), chosen by frame setup
      * from the strip table, not from these rows. */
     {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
-     "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},
+     "column chunks on POSIX threads kept by the context: the submission's engine", NULL, FX_ALL, VOXEL},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX_ALL, VOXEL},
     /* mesh: each row a thin wrapper passing the module's kernel id (src/mesh/family.c) */
