@@ -1,6 +1,7 @@
 /* The one table of kernels, every family's, each family's rows slowest first:
  * retro_kernel_best() takes the last row this CPU runs. Adding a kernel is its file(s), one
- * prototype in its family's header and one row here; adding a family is its folder, its
+ * prototype in its family's header and one row here (and, for a voxel strip, its row in
+ * strips.h); adding a family is its folder, its
  * descriptor in retro_families[] and its rows. */
 #include <stdio.h>
 #include <string.h>
@@ -12,8 +13,9 @@
 
 /* Every mode, the accuracy variants of docs/ACCURACY.md included. */
 #define ALL ((1u << RETRO_MODE_COUNT) - 1)
-/* The single-thread voxel rows with a strip take its ISA level, modes and effects from the
- * strip table (strips.h); tests/test_strips.c checks they agree. */
+/* The single-thread voxel rows with a strip point at its row of the strip table (strips.h)
+ * and state its ISA level, modes and effects with the same constants; tests/test_strips.c
+ * checks that they agree. */
 #define FX_ALL RETRO_FX_VOXEL
 #define STRIP(id) &retro_strips[RETRO_STRIP_##id]
 /* Each ISA level includes the ones below it (isa.h). */
