@@ -92,11 +92,14 @@ typedef struct retro_frame {
      * at the n'-th distance (distance n, or dist[n] in mode lod); no sample from there on
      * can rise above it. The entry past the last distance is 0. */
     const int *vcap;
-    /* mode exact: the map's maximum-height pyramid when occlusion skipping is on
-     * (src/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
+    /* modes exact and lod: the map's maximum-height pyramid when occlusion skipping is on
+     * (src/voxel/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
     const struct retro_pyramid *pyr;
     /* with pyr: the SIMD strips skip too, per group of columns (retro_ctx.simd_skip) */
     int simd_skip;
+    /* the strip the threaded kernels run: the fastest of the strip table (src/voxel/strips.h)
+     * for this frame's mode and effects at the CPU's ISA level, chosen once by setup */
+    void (*strip)(const struct retro_frame *f, float *qx, float *qy, int u0, int u1);
 } retro_frame;
 
 /* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
@@ -127,6 +130,7 @@ typedef struct retro_ctx {
     float *tscratch;    /* pthreads kernel: per-thread course accumulators */
     size_t tscratch_cap;
     void *pool;         /* owned by parallel kernels */
+    struct retro_pt_pool *pt_pool; /* the pthreads kernel's workers, kept until retro_ctx_free */
     /* SIMD kernels (src/simd_map.c): colour | height packed into one uint32 per cell, so one
      * load or gather fetches both. Rebuilt only when the map pointers or S change; like the
      * height maximum, call retro_ctx_map_changed() after editing either map in place. */
@@ -186,6 +190,7 @@ enum {
 /* A family of kernels: kernels that render the same frames from the same frame constants and
  * are checked against one reference kernel. voxel is the first (src/voxel/family.c). */
 struct retro_kernel;
+struct retro_strip; /* src/voxel/strips.h */
 
 typedef struct retro_family {
     const char *name;                /* "voxel": `retro kernels` groups by it */
@@ -214,7 +219,7 @@ typedef struct retro_kernel {
     unsigned modes;       /* RETRO_MODE_BIT() of its family's modes it renders */
     unsigned flags;       /* RETRO_KF_* */
     const char *summary;  /* one line for `retro kernels` */
-    retro_strip_fn strip; /* column-strip entry point, or NULL (naive, threaded kernels) */
+    const struct retro_strip *strip; /* its row of the strip table, or NULL (naive, threaded) */
     unsigned fx;          /* every effect (RETRO_FX_*) it renders */
     const retro_family *family;
 } retro_kernel;

@@ -7,10 +7,16 @@ out=$1
 tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
-# The project's files, in dependency order; the SIMD files are added by isa_part below.
-parts="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h
+# The project's files, in dependency order; the SIMD files (with the templates they include) are
+# added by isa_part below.
+# The strips' dispatch is the library's own: the strip table (src/voxel/strips.h, strips.c) and
+# the ISA levels (src/core/isa.h, cpu.c, which also reads RETRO_ISA), so it is kept nowhere else.
+head="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/core/isa.h
+  src/core/env.h src/core/errf.h src/voxel/strips.h src/voxel/simd_common.h src/threads/pt_pool.h
   src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
-  src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c"
+  src/core/cpu.c src/core/errf.c src/core/env.c src/voxel/strips.c"
+tail="src/threads/pt_pool.c src/threads/kernel_pthreads.c src/core/course.c"
+parts="$head $(ls src/voxel/*_tpl.h) src/arch/x86/kernel_simd_sse2.c src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c $tail"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
   cat <<HDR
@@ -19,10 +25,12 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
  *
  * render() is mode course of SEMANTICS.md, byte-identical to the course's reference images:
  * front to back with a per-column y-buffer (each pixel written exactly once, no sky fill),
- * 16 (AVX-512) or 8 (AVX2) distances per vector chosen at run time by the CPU's features,
- * columns split in chunks across threads (pthreads, in libc since glibc 2.34), each thread
- * replaying the course's accumulated positions exactly. Builds with -Wall -Wextra -pedantic,
- * linked with -lm only. */
+ * 16 (AVX-512), 8 (AVX2) or 4 (SSE2) distances per vector chosen at run time by the CPU's
+ * features (RETRO_ISA=none|sse2|avx2 lowers the level),
+ * columns split in chunks across threads kept for the life of the process (pthreads, in libc
+ * since glibc 2.34; where they are not linked, one thread), each thread replaying the course's
+ * accumulated positions exactly. RETRO_PTHREADS=N sets the thread count (default 2).
+ * Builds with -Wall -Wextra -pedantic, linked with -lm only. */
 #define RETRO_SUBMISSION 1
 #include "render.h"
 
@@ -66,14 +74,14 @@ HDR
     splice "$1"
     printf '#if defined(__clang__)\n#pragma clang attribute pop\n#else\n#pragma GCC pop_options\n#endif\n'
   }
-  for f in include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h \
-           src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c; do
+  for f in $head; do
     part "$f"
   done
-  # The SIMD strips, each compiled for its ISA and chosen at run time by the CPU's features.
+  # The SIMD strips, each compiled for its ISA and chosen at run time by the strip table.
+  isa_part src/arch/x86/kernel_simd_sse2.c sse2
   isa_part src/arch/x86/kernel_simd_avx2.c avx2
   isa_part src/arch/x86/kernel_simd_avx512.c avx2,avx512f,avx512bw,avx512vl,avx512dq
-  for f in src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c; do
+  for f in $tail; do
     part "$f"
   done
 } >"$tmp"

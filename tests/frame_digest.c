@@ -13,8 +13,6 @@
 #include "retro_scene.h"
 #include "verify_cases.h"
 
-static const char *const isa_levels[] = {"none", "sse2", "avx2", "avx512"};
-
 static uint64_t fnv(const uint32_t *p, size_t n)
 {
     uint64_t h = 1469598103934665603ull;
@@ -47,13 +45,13 @@ static void all_variants(const char *name, int mode, const retro_effects *fx, co
     size_t n = (size_t)c->scr_width * (size_t)c->scr_height;
     for (size_t k = 0; k < (all ? sizeof kernels / sizeof kernels[0] : 1); k++) {
         int threaded = !strcmp(kernels[k], "pthreads") || !strcmp(kernels[k], "omp");
-        for (int isa = threaded ? 0 : 3; isa < 4; isa++)
+        for (int isa = threaded ? 0 : retro_isa_count - 1; isa < retro_isa_count; isa++)
             for (int t = threaded ? 1 : 0; t <= (threaded ? 3 : 0); t += 2) {
-                retro_cpu_limit(isa_levels[isa]);
+                retro_cpu_limit(retro_isa_names[isa]);
                 for (size_t i = 0; i < n; i++)
                     c->out[i] = 0x01020300u ^ (uint32_t)i;
                 int e = render_with(kernels[k], t, mode, fx, p, c);
-                printf("%s %s %s %d %d %x %d %016llx\n", name, kernels[k], isa_levels[isa], t, mode,
+                printf("%s %s %s %d %d %x %d %016llx\n", name, kernels[k], retro_isa_names[isa], t, mode,
                        fx ? fx->flags : 0, e, e ? 0ull : (unsigned long long)fnv(c->out, n));
             }
     }

@@ -13,6 +13,9 @@ R="$retro render $m/a -s 40x30"
 for v in 2147483647 0 -1 abc '' ' 64' 64x +64 0x40 16385 99999999999999999999; do
   bad "RETRO_OMP_CHUNK='$v'" env RETRO_OMP_CHUNK="$v" $R -k omp -o OUT
 done
+for v in 0 -1 65 abc '' ' 2' 2x +2 0x2 99999999999999999999; do
+  bad "RETRO_PTHREADS='$v'" env RETRO_PTHREADS="$v" $R -k pthreads -o OUT
+done
 for v in bogus '' AVX2 'sse2 ' 'avx2
 x'; do
   bad "RETRO_ISA='$v'" env RETRO_ISA="$v" $R -o OUT
@@ -38,6 +41,10 @@ done
 for v in 1 '4,2' 3; do
   good "OMP_NUM_THREADS=$v" env OMP_NUM_THREADS="$v" $R -k omp -o OUT
   cmp -s "$out/new.ppm" "$tmp/ref.ppm" || { echo "FAIL: OMP_NUM_THREADS=$v changed the frame"; fails=$((fails + 1)); }
+done
+for v in 1 3 64; do
+  good "RETRO_PTHREADS=$v" env RETRO_PTHREADS="$v" $R -k pthreads -o OUT
+  cmp -s "$out/new.ppm" "$tmp/ref.ppm" || { echo "FAIL: RETRO_PTHREADS=$v changed the frame"; fails=$((fails + 1)); }
 done
 # The largest accepted count, with a single-thread kernel: 64 threads (the cap) of libomp
 # under the sanitizers on two cores would only measure the machine.

@@ -79,8 +79,8 @@ void make_map(retro_map *m, int S)
 }
 
 /* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares. */
-void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
-                  const retro_effects *fx)
+static void check_one(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+                      const retro_effects *fx)
 {
     size_t n = (size_t)W * (size_t)H;
     if (n > g->cap) {
@@ -126,6 +126,26 @@ void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int
     }
     g->frames++;
     g->skipped_frames += g->rc[SKIP].frame.pyr != NULL;
+}
+
+/* Each case in mode exact, then in mode lod (the lod effect on the same effects) at a rate
+ * taking the smallest steps allowed, the default's, or ones longer than the finest blocks,
+ * in turn: mode lod's runs are of sample indices whose distances grow (hmax_pyramid.h). */
+void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+           const retro_effects *fx)
+{
+    check_one(g, what, m, p, W, H, D, fx);
+    static const float rates[] = {0.02f, 0.3f, 0.001f};
+    retro_effects lod;
+    if (fx)
+        lod = *fx;
+    else
+        memset(&lod, 0, sizeof lod);
+    lod.flags |= RETRO_FX_LOD;
+    lod.lod = rates[g->frames % 3];
+    char label[160];
+    snprintf(label, sizeof label, "%s (mode lod %g)", what, (double)lod.lod);
+    check_one(g, label, m, p, W, H, D, &lod);
 }
 
 player_t at(float x, float y, int angle, int height)

@@ -26,7 +26,7 @@ void rig_close(trio *g);
 void new_map(trio *g);
 void make_map(retro_map *m, int S);
 /* Renders pose p with naive, ybuffer skipping and not skipping, and every checker variant,
- * and fails the test on any difference. */
+ * and fails the test on any difference; then the same in mode lod (the lod effect added). */
 void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
            const retro_effects *fx);
 player_t at(float x, float y, int angle, int height);

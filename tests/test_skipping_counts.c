@@ -26,17 +26,20 @@ static void make_map(retro_map *m, int S)
 }
 
 /* The samples of one frame as the counting build of ybuffer sees them. */
-static retro_sample_counts count(retro_ctx *rc, const retro_map *m, player_t p, int W, int H, int D, uint32_t *out)
+static retro_sample_counts count(retro_ctx *rc, retro_mode mode, const retro_map *m, player_t p, int W, int H, int D,
+                                 uint32_t *out)
 {
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
     ctx_t c = {W, H, m->size, D, 0, m->height, m->color, out};
     memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
-    cr_assert_eq(retro_render(rc, &counted, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
+    cr_assert_eq(retro_render(rc, &counted, mode, &p, &c), RETRO_OK);
+    cr_assert(rc->no_skip || rc->frame.pyr, "the frame had no pyramid");
     return retro_ybuffer_counts;
 }
 
-static void counts_compare(const char *what, const retro_map *m, player_t p, int W, int H, int D, int must_skip)
+static void counts_mode(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+                        int must_skip)
 {
     retro_ctx on, off;
     retro_ctx_init(&on);
@@ -45,7 +48,7 @@ static void counts_compare(const char *what, const retro_map *m, player_t p, int
     size_t n = (size_t)W * (size_t)H;
     uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     cr_assert(a && b);
-    retro_sample_counts s = count(&on, m, p, W, H, D, a), t = count(&off, m, p, W, H, D, b);
+    retro_sample_counts s = count(&on, mode, m, p, W, H, D, a), t = count(&off, mode, m, p, W, H, D, b);
     cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the counting build's frames differ", what);
     cr_assert_eq(s.painting, t.painting, "%s: %llu samples paint with skipping, %llu without", what,
                  (unsigned long long)s.painting, (unsigned long long)t.painting);
@@ -63,6 +66,11 @@ static void counts_compare(const char *what, const retro_map *m, player_t p, int
     retro_ctx_free(&off);
 }
 
+static void counts_compare(const char *what, const retro_map *m, player_t p, int W, int H, int D, int must_skip)
+{
+    counts_mode(RETRO_MODE_EXACT, what, m, p, W, H, D, must_skip);
+}
+
 /* A view where skipping must skip: a low ridge near the camera hides the plain behind it, and
  * a tall spike behind the camera keeps vcap at the top of the screen for most distances, so
  * the early exit cannot stop the columns: only skipping avoids evaluating the hidden plain. */
@@ -75,6 +83,8 @@ Test(skipping, skipping_skips)
             m.height[(size_t)j * 256 + (size_t)i] = 107;
     m.height[(size_t)128 * 256 + 20] = 255;
     counts_compare("ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
+    /* mode lod samples fewer distances behind the ridge, still most of them hidden */
+    counts_mode(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     retro_map_free(&m);
 }
 
@@ -172,4 +182,71 @@ Test(skipping, probe_bound)
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld distances)", skipped);
+}
+
+/* The probe in mode lod (retro_skip_run over sample indices, distances dist[n]): every index
+ * it skips has a row at or below y, brute-forced, at lod rates from the smallest steps to
+ * steps longer than a block, plain and bilinear. */
+Test(skipping, probe_bound_lod)
+{
+    static const int sizes[] = {5, 37, 64, 129};
+    static const float rates[] = {0.001f, 0.02f, 0.1f, 0.7f};
+    uint64_t st = 1234;
+    long skipped = 0;
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        int S = sizes[si];
+        retro_map m;
+        noise_map(&m, S, 71 + (uint64_t)S);
+        for (size_t i = 0; i < (size_t)S * (size_t)S; i++)
+            m.height[i] = (uint8_t)(m.height[i] / 4);
+        for (int k = 0; k < 3; k++)
+            m.height[rng_next(&st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
+        uint32_t out[1];
+        retro_ctx rc;
+        retro_ctx_init(&rc);
+        for (int frame = 0; frame < 60; frame++) {
+            int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
+            int D = 2 + (int)(rng_next(&st) % (unsigned)(8 * S));
+            float x = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f - (float)S;
+            float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
+            player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
+            ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
+            rc.lod = rates[frame % 4];
+            cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_LOD, &p, &c), RETRO_OK);
+            const retro_frame *f = &rc.frame;
+            cr_assert_not_null(f->pyr);
+            if (f->ndist < 2)
+                continue;
+            for (int q = 0; q < 40; q++) {
+                int u = (int)(rng_next(&st) % (unsigned)W), n = 1 + (int)(rng_next(&st) % (unsigned)(f->ndist - 1));
+                int yb = (int)(rng_next(&st) % (unsigned)H), bil = q & 1;
+                retro_skip_col col;
+                retro_skip_col_init(&col, f, u);
+                col.level = RETRO_PYR_LMIN + (int)(rng_next(&st) % 4);
+                if (col.level > f->pyr->lmax)
+                    col.level = f->pyr->lmax;
+                int e = bil ? retro_skip_run(f->pyr, f, &col, n, f->ndist, yb, 0, 1, f->dist)
+                            : retro_skip_run(f->pyr, f, &col, n, f->ndist, yb, 0, 0, f->dist);
+                cr_assert(e >= n && e <= f->ndist, "skip from %d returned %d (%d samples)", n, e, f->ndist);
+                for (int k = n; k < e; k++) {
+                    int dd = f->dist[k], v;
+                    float qx = f->x0 + (float)dd * f->rx[u], qy = f->y0 + (float)dd * f->ry[u];
+                    if (bil) {
+                        retro_bilerp b;
+                        float hf = retro_bilinear_height(f, qx, qy, &b);
+                        v = retro_exact_row_f(f->kd[dd], f->half_h, H, retro_bilinear_dh(hf, f->height));
+                    } else {
+                        size_t idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
+                        v = retro_exact_row(f->kd[dd], f->half_h, H, f->height_map[idx] - f->height);
+                    }
+                    cr_assert_leq(v, yb, "S %d lod %g: column %d skipped sample %d (distance %d) with row %d above %d",
+                                  S, (double)rc.lod, u, k, dd, v, yb);
+                }
+                skipped += e - n;
+            }
+        }
+        retro_ctx_free(&rc);
+        retro_map_free(&m);
+    }
+    cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld samples)", skipped);
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "isa.h"
 #include "retro.h"
 
 /* names of the set bits of mask, comma-separated, by name(bit); "-" when none. */
@@ -41,8 +42,11 @@ int cmd_kernels(int argc, char **argv)
             return 0;
         }
         if (!strcmp(argv[i], "--isa") && i + 1 < argc) {
-            if (retro_cpu_limit(argv[++i]))
-                return cli_error("kernels", "unknown ISA level '%s' (none, sse2, avx2, avx512)", argv[i]);
+            if (retro_cpu_limit(argv[++i])) {
+                char levels[64];
+                return cli_error("kernels", "unknown ISA level '%s' (%s)", argv[i],
+                                 retro_isa_list(levels, sizeof levels));
+            }
             continue;
         }
         return cli_error("kernels", "unknown argument '%s' (retro kernels --help)", argv[i]);

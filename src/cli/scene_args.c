@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "isa.h"
 #include "scene_args.h"
 
 void render_opts_init(render_opts *o)
@@ -59,8 +60,10 @@ int render_opt(const char *cmd, render_opts *o, const char *a, const char *v)
             return cli_error(cmd, "bad sky colour '%s' (RRGGBB)", v);
         o->have_sky = 1;
     } else if (!strcmp(a, "--isa")) {
-        if (retro_cpu_limit(v))
-            return cli_error(cmd, "unknown ISA level '%s' (none, sse2, avx2, avx512)", v);
+        if (retro_cpu_limit(v)) {
+            char levels[64];
+            return cli_error(cmd, "unknown ISA level '%s' (%s)", v, retro_isa_list(levels, sizeof levels));
+        }
     } else if (!strcmp(a, "--lod")) {
         if (cli_float(v, &o->lod) || o->lod < 0 || o->lod > 100)
             return cli_error(cmd, "bad lod '%s' (a number from 0 to 100)", v);

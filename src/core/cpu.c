@@ -4,18 +4,39 @@
 #include <string.h>
 
 #include "env.h"
+#include "isa.h"
 #include "retro.h"
 
-/* The ISA levels, lowest first, each allowing the features of the ones below: the one list
- * of their names (retro_isa_names) and the features each allows. */
-const char *const retro_isa_names[] = {"none", "sse2", "avx2", "avx512"};
+/* The ISA levels (isa.h), lowest first: their names and the features each allows. */
+#define RETRO_ISA_NAME_(level, name, cpu) #name,
+const char *const retro_isa_names[] = {RETRO_ISA_LEVELS(RETRO_ISA_NAME_)};
+#undef RETRO_ISA_NAME_
 const int retro_isa_count = (int)(sizeof retro_isa_names / sizeof retro_isa_names[0]);
-static const unsigned level_mask[] = {
-    0,
-    RETRO_CPU_SSE2,
-    RETRO_CPU_SSE2 | RETRO_CPU_AVX2,
-    RETRO_CPU_SSE2 | RETRO_CPU_AVX2 | RETRO_CPU_AVX512,
-};
+#define RETRO_ISA_MASK_(level, name, cpu) cpu,
+static const unsigned level_mask[] = {RETRO_ISA_LEVELS(RETRO_ISA_MASK_)};
+#undef RETRO_ISA_MASK_
+
+unsigned retro_isa_cpu(int level)
+{
+    return level >= 0 && level < retro_isa_count ? level_mask[level] : 0;
+}
+
+const char *retro_isa_list(char *buf, size_t n)
+{
+    size_t at = 0;
+    if (n)
+        buf[0] = 0;
+    for (int i = 0; i < retro_isa_count && at + 1 < n; i++) {
+        const char *sep = i ? ", " : "";
+        size_t len = strlen(sep) + strlen(retro_isa_names[i]);
+        if (at + len >= n)
+            break;
+        strcpy(buf + at, sep);
+        strcpy(buf + at + strlen(sep), retro_isa_names[i]);
+        at += len;
+    }
+    return buf;
+}
 
 static unsigned detected(void)
 {

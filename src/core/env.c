@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "isa.h"
 #include "retro.h"
 
 
@@ -67,9 +68,14 @@ int retro_env_check(char *err, size_t n)
 {
     const char *isa = getenv("RETRO_ISA"), *shared = getenv("RETRO_SHARED");
     long chunk;
-    if (isa && retro_cpu_level_index(isa) < 0)
-        return retro_errf(err, n, "environment: RETRO_ISA='%.40s' is not none, sse2, avx2 or avx512", isa);
+    if (isa && retro_cpu_level_index(isa) < 0) {
+        char levels[64];
+        return retro_errf(err, n, "environment: RETRO_ISA='%.40s' is not one of %s", isa,
+                          retro_isa_list(levels, sizeof levels));
+    }
     if (retro_env_long("RETRO_OMP_CHUNK", 1, RETRO_MAX_SCREEN, &chunk, err, n) < 0)
+        return -1;
+    if (retro_env_long("RETRO_PTHREADS", 1, RETRO_PTHREADS_MAX, &chunk, err, n) < 0)
         return -1;
     if (shared && (!*shared || strlen(shared) > RETRO_SHARED_MAX))
         return retro_errf(err, n, "environment: RETRO_SHARED must be a folder's path of 1..%d bytes",

@@ -8,16 +8,18 @@
 
 /* Columns per chunk of the omp kernel (RETRO_OMP_CHUNK) and their default. */
 #define RETRO_OMP_CHUNK_DEFAULT 64
+/* RETRO_PTHREADS's largest value: the pthreads kernel's thread count (src/threads/pt_pool.h). */
+#define RETRO_PTHREADS_MAX 64
 /* RETRO_SHARED's longest accepted value: room for "/course/NAME" in 512-byte paths. */
 #define RETRO_SHARED_MAX 400
 
 /* 0 when name is unset; 1 with *out when it holds a decimal integer (digits, an optional
  * leading minus) in lo..hi; -1 with a one-line err naming the variable otherwise. */
 int retro_env_long(const char *name, long lo, long hi, long *out, char *err, size_t errlen);
-/* Checks every variable the project reads (RETRO_ISA, RETRO_OMP_CHUNK, RETRO_SHARED,
- * OMP_NUM_THREADS): 0, or -1 with err for the first bad one. */
+/* Checks every variable the project reads (RETRO_ISA, RETRO_OMP_CHUNK, RETRO_PTHREADS,
+ * RETRO_SHARED, OMP_NUM_THREADS): 0, or -1 with err for the first bad one. */
 int retro_env_check(char *err, size_t errlen);
-/* Index of ISA level name in none, sse2, avx2, avx512, or -1 (src/cpu.c). */
+/* Index of ISA level name in retro_isa_names, or -1 (src/core/cpu.c). */
 int retro_cpu_level_index(const char *name);
 
 #endif

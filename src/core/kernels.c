@@ -1,25 +1,26 @@
 /* The one table of kernels, every family's, each family's rows slowest first:
  * retro_kernel_best() takes the last row this CPU runs. Adding a kernel is its file(s), one
- * prototype in its family's header and one row here; adding a family is its folder, its
+ * prototype in its family's header and one row here (and, for a voxel strip, its row in
+ * strips.h); adding a family is its folder, its
  * descriptor in retro_families[] and its rows. */
 #include <stdio.h>
 #include <string.h>
 
 #include "kernels.h"
+#include "strips.h"
 #include "mesh_family.h"
 #include "retro_scene.h"
 
 /* Every mode, the accuracy variants of docs/ACCURACY.md included. */
 #define ALL ((1u << RETRO_MODE_COUNT) - 1)
-#define EXACT RETRO_MODE_BIT(RETRO_MODE_EXACT)
-#define EXACT_COURSE (EXACT | RETRO_MODE_BIT(RETRO_MODE_COURSE))
-#define EXACT_COURSE_LOD (EXACT_COURSE | RETRO_MODE_BIT(RETRO_MODE_LOD))
-/* Every effect (docs/EFFECTS.md): the SIMD strips render fog and bilinear themselves. */
+/* The single-thread voxel rows with a strip point at its row of the strip table (strips.h)
+ * and state its ISA level, modes and effects with the same constants; tests/test_strips.c
+ * checks that they agree. */
 #define FX_ALL RETRO_FX_VOXEL
-/* Each ISA level includes the ones below it, as the files are compiled (cpu.c levels). */
-#define ISA_SSE2 RETRO_CPU_SSE2
-#define ISA_AVX2 (ISA_SSE2 | RETRO_CPU_AVX2)
-#define ISA_AVX512 (ISA_AVX2 | RETRO_CPU_AVX512)
+#define STRIP(id) &retro_strips[RETRO_STRIP_##id]
+/* Each ISA level includes the ones below it (isa.h). */
+#define ISA_AVX2 RETRO_ISA_CPU_AVX2
+#define ISA_AVX512 RETRO_ISA_CPU_AVX512
 #define VOXEL &retro_family_voxel
 #define MESH &retro_family_mesh
 #define MESH_MODES ((1u << RETRO_MESH_MODE_COUNT) - 1)
@@ -32,20 +33,21 @@ const size_t retro_family_count = sizeof retro_families / sizeof retro_families[
 
 const retro_kernel retro_kernels[] = {
     {"naive", retro_kernel_naive, 0, ALL, 0, "painter, back to front: the reference", NULL, FX_ALL, VOXEL},
-    {"ybuffer", retro_kernel_ybuffer, 0, ALL, RETRO_KF_WRITE_ONCE,
-     "front to back with a per-column y-buffer, each pixel written once", retro_strip_ybuffer, FX_ALL, VOXEL},
-    {"simd-sse2", retro_kernel_simd_sse2, ISA_SSE2, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", retro_strip_simd_sse2, FX_ALL,
-     VOXEL},
-    {"simd-avx2", retro_kernel_simd_avx2, ISA_AVX2, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", retro_strip_simd_avx2, FX_ALL,
-     VOXEL},
-    {"simd-avx512", retro_kernel_simd_avx512, ISA_AVX512, EXACT_COURSE_LOD, RETRO_KF_WRITE_ONCE,
-     "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores", retro_strip_simd_avx512,
-     FX_ALL, VOXEL},
-    /* Threaded kernels stay last: they run the strip of the best single-thread row above. */
+    {"ybuffer", retro_kernel_ybuffer, 0, RETRO_STRIP_MODES_ALL, RETRO_KF_WRITE_ONCE,
+     "front to back with a per-column y-buffer, each pixel written once", STRIP(ybuffer), FX_ALL, VOXEL},
+    {"simd-sse2", retro_kernel_simd_sse2, RETRO_ISA_CPU_SSE2, RETRO_STRIP_MODES_SIMD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 4 columns per SSE2 vector, packed map, stores lane by lane", STRIP(simd_sse2),
+     RETRO_STRIP_FX_SIMD, VOXEL},
+    {"simd-avx2", retro_kernel_simd_avx2, RETRO_ISA_CPU_AVX2, RETRO_STRIP_MODES_SIMD, RETRO_KF_WRITE_ONCE,
+     "y-buffer, 8 columns per AVX2 vector, packed map, masked row stores", STRIP(simd_avx2),
+     RETRO_STRIP_FX_SIMD, VOXEL},
+    {"simd-avx512", retro_kernel_simd_avx512, RETRO_ISA_CPU_AVX512, RETRO_STRIP_MODES_SIMD,
+     RETRO_KF_WRITE_ONCE, "y-buffer, 16 columns per AVX-512 vector, packed map, masked row stores",
+     STRIP(simd_avx512), RETRO_STRIP_FX_SIMD, VOXEL},
+    /* The threaded kernels run the frame's strip (retro_frame.strip), chosen by frame setup
+     * from the strip table, not from these rows. */
     {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
-     "column chunks on POSIX threads started per frame: the submission's engine", NULL, FX_ALL, VOXEL},
+     "column chunks on POSIX threads kept by the context: the submission's engine", NULL, FX_ALL, VOXEL},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX_ALL, VOXEL},
     /* mesh: each row a thin wrapper passing the module's kernel id (src/mesh/family.c) */
@@ -170,17 +172,6 @@ const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *f
 const retro_kernel *retro_kernel_best(retro_mode mode)
 {
     return retro_kernel_best_fx(mode, NULL);
-}
-
-retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx)
-{
-    retro_strip_fn best = NULL;
-    for (size_t i = 0; i < retro_kernel_count; i++) {
-        const retro_kernel *k = &retro_kernels[i];
-        if (k->strip && retro_kernel_runs_here(k) && retro_kernel_has_mode(k, mode) && !(fx & ~k->fx))
-            best = k->strip;
-    }
-    return best;
 }
 
 retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c)

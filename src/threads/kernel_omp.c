@@ -32,7 +32,7 @@ static int chunk_columns(void)
 void retro_kernel_omp(const void *frame, retro_ctx *rc)
 {
     const retro_frame *f = frame;
-    retro_strip_fn strip = retro_best_strip(f->mode, f->fx);
+    retro_strip_fn strip = f->strip; /* chosen by frame setup (strips.h) */
     int threads = retro_pool_threads(rc);
     retro_pool *pool = retro_pool_get(rc, threads, f->D);
     if (!pool) { /* out of memory for scratch: render single-threaded, still exact */

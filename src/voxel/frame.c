@@ -7,6 +7,8 @@
 #include "retro_internal.h"
 #include "kernels.h"
 #include "retro_scene.h"
+#include "pt_pool.h"
+#include "strips.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
 #include "mesh_family.h"
@@ -43,6 +45,7 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->fx_key);
     free(rc->fog);
     free(rc->simd_cells);
+    retro_pt_pool_free(rc->pt_pool);
 #ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
     retro_pool_free(rc);
     retro_mesh_state_free(rc->mesh);
@@ -64,7 +67,7 @@ void retro_ctx_map_changed(retro_ctx *rc)
 }
 
 #ifndef RETRO_SUBMISSION
-/* The pyramid for a frame of mode exact that may skip: built when the map is new; NULL when
+/* The pyramid for a frame of mode exact or lod that may skip: built when the map is new; NULL when
  * skipping is off, the map too small to have levels, or the memory short (-1). */
 static int skip_pyramid(retro_ctx *rc, const uint8_t *hm, int S, const struct retro_pyramid **out)
 {
@@ -403,10 +406,11 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     }
     f->simd_skip = 0;
 #ifndef RETRO_SUBMISSION
-    if (mode == RETRO_MODE_EXACT && skip_pyramid(rc, hm, S, &f->pyr))
+    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && skip_pyramid(rc, hm, S, &f->pyr))
         return RETRO_ENOMEM;
     f->simd_skip = f->pyr && rc->simd_skip;
 #endif
+    f->strip = retro_strip_best(mode, f->fx); /* once per frame, for the threaded kernels */
     return RETRO_OK;
 }
 

@@ -72,11 +72,11 @@ void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 extern retro_sample_counts retro_simd_counts;
 void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
 
-/* Whether the ybuffer strip skips this frame: mode exact with a pyramid (any per-sample
- * effects: fog changes colours only, bilinear is covered by the bound). */
+/* Whether the ybuffer strip skips this frame: mode exact or lod with a pyramid (any
+ * per-sample effects: fog changes colours only, bilinear is covered by the bound). */
 RETRO_HELPER int retro_skip_applies(const retro_frame *f)
 {
-    return f->pyr && f->mode == RETRO_MODE_EXACT;
+    return f->pyr && (f->mode == RETRO_MODE_EXACT || f->mode == RETRO_MODE_LOD);
 }
 
 /* Per-column traversal state. */
@@ -105,8 +105,9 @@ RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
     return i < 0 ? i + S : i;
 }
 
-/* The first distance in [d, d_end) whose sample in this column may rise above y; d_end when
- * none may. Every distance it skips has v <= y, so it cannot paint.
+/* The first index n in [n, n_end) whose sample in this column may rise above y; n_end when
+ * none may. The n-th sample is at distance dist[n] (mode lod), or n when dist is NULL (mode
+ * exact: retro_skip_column). Every sample it skips has v <= y, so it cannot paint.
  *
  * Proof. A run [d, d1] is skipped only when the check below passes for it:
  * 1. Positions. For e in [d, d1], qx(e) = x0 + (float)e * rx with (float)e exact (e < 2^24)
@@ -135,33 +136,44 @@ RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
  * rounded a few times, exceeds their maximum by far less than 1 (frame.c's hmax + 1 rests on
  * the same fact), so it is <= M + 1, and the row is computed from (float)(M + 1) through the
  * sample's own dh (retro_bilinear_dh, monotone) and row operations.
+ * Mode lod: a run is of indices [n, n1], whose distances dist[n] < .. < dist[n1] increase
+ * (frame.c), so every distance the run samples lies in [d, d1] := [dist[n], dist[n1]], and
+ * points 1 to 4 hold for those samples as they stand: 1 needs only that each sample's
+ * distance lies between the two ends, 3 that kd is non-increasing in the distance (kd is
+ * indexed by distance in mode lod as in mode exact). The index of the run's end is chosen
+ * from the step at n (steps never shrink, so the run's distances span at most the estimated
+ * length plus the later steps' growth); like the length in mode exact it is only an
+ * estimate, the confirmed end cells decide.
  * The caller guarantees y < H (the vcap exit catches full columns). Levels go up after a
  * skip and down after a window that may paint; at RETRO_PYR_LMIN the probe gives up.
  */
 static inline __attribute__((always_inline, unused)) int
-retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d, int d_end, int y,
-                  const int pow2, const int bilinear)
+retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int n, int n_end, int y,
+               const int pow2, const int bilinear, const int *dist)
 {
     const int S = f->S, lmax = p->lmax;
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
     const float rx = c->rx, ry = c->ry;
     const int64_t height = f->height;
-    int L = c->level, at = 0, I0 = 0, J0 = 0; /* the cell at distance at (0: none yet) */
+    int L = c->level, at = 0, I0 = 0, J0 = 0; /* the cell at index at (0: none yet) */
 #ifdef RETRO_COUNT_SAMPLES
     retro_ybuffer_counts.probes++;
 #endif
-    while (d < d_end) {
+    while (n < n_end) {
 #ifdef RETRO_COUNT_SAMPLES
         retro_ybuffer_counts.windows++;
 #endif
         const int B = 1 << L;
-        int len = 1 + (int)((float)(B - 1) * c->inv_r);
-        int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
-        if (at != d) { /* a finer level starts where the coarser one did */
+        int len = 1 + (int)((float)(B - 1) * c->inv_r); /* distances: an estimate */
+        if (dist && n + 1 < n_end) /* in indices, by the step at n */
+            len = 1 + (len - 1) / (dist[n + 1] - dist[n]);
+        const int n1 = n_end - 1 - n < len - 1 ? n_end - 1 : n + len - 1;
+        const int d = dist ? dist[n] : n, d1 = dist ? dist[n1] : n1;
+        if (at != n) { /* a finer level starts where the coarser one did */
             const float f0 = (float)d;
             I0 = retro_floor(bilinear ? x0 + f0 * rx - 0.5f : x0 + f0 * rx);
             J0 = retro_floor(bilinear ? y0 + f0 * ry - 0.5f : y0 + f0 * ry);
-            at = d;
+            at = n;
         }
         const float f1 = (float)d1;
         const int I1 = retro_floor(bilinear ? x0 + f1 * rx - 0.5f : x0 + f1 * rx);
@@ -179,7 +191,7 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
                 fdh = (float)((int64_t)M - height);
             const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;
             if (!(vf >= need)) {
-                d = d1 + 1;
+                n = n1 + 1;
                 if (L < lmax)
                     L++;
                 continue;
@@ -190,7 +202,16 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
         L--;
     }
     c->level = L;
-    return d;
+    return n;
+}
+
+/* The first distance in [d, d_end) whose sample in this column may rise above y (mode
+ * exact); see retro_skip_run. */
+static inline __attribute__((always_inline, unused)) int
+retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, int d, int d_end, int y,
+                  const int pow2, const int bilinear)
+{
+    return retro_skip_run(p, f, c, d, d_end, y, pow2, bilinear, NULL);
 }
 
 

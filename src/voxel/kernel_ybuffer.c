@@ -22,9 +22,9 @@
  * constants, so a frame runs a loop with exactly the work it calls for: the plain exact loop
  * carries no effect code at all.
  *
- * Occlusion skipping (docs/SKIPPING.md): in mode exact, with any per-sample effects, a frame that has
- * a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_column
- * (src/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
+ * Occlusion skipping (docs/SKIPPING.md): in modes exact and lod, with any per-sample effects, a
+ * frame that has a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_run
+ * (src/voxel/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
  * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
  * and painting into retro_ybuffer_counts (the library holds that build too, under other names).
  */
@@ -210,20 +210,22 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
 
 
 #ifndef RETRO_SUBMISSION
-/* Columns [c0, c1) of mode exact with skipping, each walked nearest first: the pyramid is
- * probed (retro_skip_column) at every distance the walk reaches, and where it cannot skip the
+/* Columns [c0, c1) of mode exact or lod with skipping, each walked nearest first: the pyramid
+ * is probed (retro_skip_run) at every sample the walk reaches, and where it cannot skip the
  * next RETRO_SKIP_NEAR samples are evaluated in two passes, their cells and vf first (sample()'s
  * operations, no branch on a map load, so the loads overlap), then the y-buffer pass over them
  * nearest first. Samples at or past the vcap exit may be evaluated in that batch but cannot
  * paint (their v <= vcap <= y). Walking a column keeps it free of the per-distance cost of the
  * columns that skip, which chunk() pays at every distance. Each column paints the same samples
- * in the same order as in chunk(), so the bytes are the same. */
+ * in the same order as in chunk(), so the bytes are the same. The walk is over sample indices
+ * n: the distance is n in mode exact and dist[n] in mode lod (kind KIND_LOD), as in chunk(). */
 static inline __attribute__((always_inline)) void columns_skip(const retro_frame *frame, int c0, int c1,
                                                                const int kind, const int fog, const int bilinear)
 {
     const retro_frame copy = *frame, *f = &copy;
-    const int W = f->W, H = f->H, D = f->D, S = f->S;
-    const int *vcap = f->vcap;
+    const int W = f->W, H = f->H, S = f->S;
+    const int *vcap = f->vcap, *dist = kind == KIND_LOD ? f->dist : NULL;
+    const int n_end = kind == KIND_LOD ? f->ndist : f->D;
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
     const int64_t height = f->height;
     const uint8_t *hm = f->height_map;
@@ -232,34 +234,36 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
         retro_skip_col col;
         retro_skip_col_init(&col, f, u);
         const float rx = col.rx, ry = col.ry;
-        int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
-        while (d < D && y < vcap[d]) {
-            int e = retro_skip_column(f->pyr, f, &col, d, D, y, kind == KIND_EXACT_POW2, bilinear);
-            if (e > d) {
-                d = e;
+        int y = 0, n = 1, batch = RETRO_SKIP_NEAR;
+        while (n < n_end && y < vcap[n]) {
+            int e = retro_skip_run(f->pyr, f, &col, n, n_end, y, kind == KIND_EXACT_POW2, bilinear, dist);
+            if (e > n) {
+                n = e;
                 batch = RETRO_SKIP_NEAR;
                 continue;
             }
-            const int n = D - d < batch ? D - d : batch;
+            const int cnt = n_end - n < batch ? n_end - n : batch;
             /* probes that keep failing (terrain that keeps rising) come less often */
             batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
             if (bilinear) { /* four cells and a colour blend per sample: one pass */
-                for (int t = 0; t < n && y < H; t++) {
+                for (int t = 0; t < cnt && y < H; t++) {
+                    const int d = dist ? dist[n + t] : n + t;
                     uint32_t color;
                     COUNT_EVAL();
-                    int v = sample(f, kind, fog, 1, u, d + t, (float)(d + t), f->kd[d + t], 0, 0, y, &color);
+                    int v = sample(f, kind, fog, 1, u, d, (float)d, f->kd[d], 0, 0, y, &color);
                     if (v > y) {
                         COUNT_PAINT();
                         y = span(out, W, H, u, y, v, color);
                     }
                 }
-                d += n;
+                n += cnt;
                 continue;
             }
             uint32_t cell[RETRO_SKIP_FAR];
             float vfs[RETRO_SKIP_FAR];
-            for (int t = 0; t < n; t++) {
-                const float fd = (float)(d + t), qx = x0 + fd * rx, qy = y0 + fd * ry;
+            for (int t = 0; t < cnt; t++) {
+                const int d = dist ? dist[n + t] : n + t;
+                const float fd = (float)d, qx = x0 + fd * rx, qy = y0 + fd * ry;
                 uint32_t idx;
                 if (kind == KIND_EXACT_POW2)
                     idx = (uint32_t)(retro_floor(qy) & (S - 1)) * (uint32_t)S + (uint32_t)(retro_floor(qx) & (S - 1));
@@ -267,17 +271,17 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
                     idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
                 COUNT_EVAL();
                 cell[t] = idx;
-                vfs[t] = f->kd[d + t] * (float)(hm[idx] - height) + half_h;
+                vfs[t] = f->kd[d] * (float)(hm[idx] - height) + half_h;
             }
-            for (int t = 0; t < n && y < H; t++) { /* a full column takes nothing more */
+            for (int t = 0; t < cnt && y < H; t++) { /* a full column takes nothing more */
                 if (!(vfs[t] >= (float)(y + 1)))
                     continue;
                 const int v = vfs[t] >= (float)H ? H : (int)vfs[t];
                 const uint32_t c = f->color_map[cell[t]];
                 COUNT_PAINT();
-                y = span(out, W, H, u, y, v, fog ? retro_fog(c, f->sky, f->fog[d + t]) : c);
+                y = span(out, W, H, u, y, v, fog ? retro_fog(c, f->sky, f->fog[dist ? dist[n + t] : n + t]) : c);
             }
-            d += n;
+            n += cnt;
         }
         span(out, W, H, u, y, H, f->sky);
     }
@@ -306,10 +310,14 @@ CHUNK_FN(course, KIND_COURSE, 0, 0)
     }
 SKIP_FN(skip_any, KIND_EXACT, 0, 0)
 SKIP_FN(skip_pow2, KIND_EXACT_POW2, 0, 0)
+SKIP_FN(skip_lod, KIND_LOD, 0, 0)
 #ifndef RETRO_NO_EFFECTS
 SKIP_FN(skip_fog, KIND_EXACT, 1, 0)
 SKIP_FN(skip_bilinear, KIND_EXACT, 0, 1)
 SKIP_FN(skip_fog_bilinear, KIND_EXACT, 1, 1)
+SKIP_FN(skip_lod_fog, KIND_LOD, 1, 0)
+SKIP_FN(skip_lod_bilinear, KIND_LOD, 0, 1)
+SKIP_FN(skip_lod_fog_bilinear, KIND_LOD, 1, 1)
 #endif
 #endif
 #ifndef RETRO_NO_EFFECTS /* the benchmark builds it without, to show effect code costs nothing */
@@ -326,12 +334,14 @@ static chunk_fn chunk_for(const retro_frame *f)
 {
 #ifndef RETRO_SUBMISSION
     if (retro_skip_applies(f)) {
+        const int lod = f->mode == RETRO_MODE_LOD;
 #ifndef RETRO_NO_EFFECTS
-        static const chunk_fn skip_fx[3] = {skip_fog, skip_bilinear, skip_fog_bilinear};
+        static const chunk_fn skip_fx[2][3] = {{skip_fog, skip_bilinear, skip_fog_bilinear},
+                                               {skip_lod_fog, skip_lod_bilinear, skip_lod_fog_bilinear}};
         if (f->fx)
-            return skip_fx[((f->fx & RETRO_FX_FOG) ? 1 : 0) + ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0) - 1];
+            return skip_fx[lod][((f->fx & RETRO_FX_FOG) ? 1 : 0) + ((f->fx & RETRO_FX_BILINEAR) ? 2 : 0) - 1];
 #endif
-        return (f->S & (f->S - 1)) ? skip_any : skip_pow2;
+        return lod ? skip_lod : (f->S & (f->S - 1)) ? skip_any : skip_pow2;
     }
 #endif
 #ifndef RETRO_NO_EFFECTS

@@ -19,10 +19,6 @@ void retro_strip_simd_avx512(const retro_frame *f, float *qx, float *qy, int u0,
  * when the frame cannot use it): threaded kernels call it before their threads start. */
 void retro_simd_offer_packed(retro_ctx *rc);
 
-/* The strip of the fastest single-thread kernel this CPU runs for mode that implements the
- * per-sample effects fx. */
-retro_strip_fn retro_best_strip(retro_mode mode, unsigned fx);
-
 void retro_kernel_naive(const void *frame, retro_ctx *rc);
 void retro_kernel_ybuffer(const void *frame, retro_ctx *rc);
 void retro_kernel_simd_sse2(const void *frame, retro_ctx *rc);
