@@ -4,9 +4,11 @@
 #ifndef RETRO_MESH_FAST_LANES_H
 #define RETRO_MESH_FAST_LANES_H
 
+#include "fast_ref.h"
 #include "mesh_internal.h"
 
 #include "fast_raster.h"
+#include "fast_ref.h"
 #include "mesh_internal.h"
 
 #define FR 32              /* lanes per vertex row: MESH_BLOCK + 1 rounded up, room to load at +1 */
@@ -16,12 +18,6 @@ typedef struct {
     float z[FN][FR], l[FN][FR], e[FN][FR], q[FN][FR], h[FN][FR];
     int32_t X[FN][FR], Y[FN][FR], out[FN][FR];
 } fast_soa;
-
-static int fast_wrap(int64_t v, int S)
-{
-    int64_t r = v % S;
-    return (int)(r < 0 ? r + S : r);
-}
 
 /* Vertex stage of vertex row j (all lanes; lanes past ni repeat the last vertex). */
 static void fast_vertex_row(const mesh_frame *f, fast_soa *b, const float *dxv, int Ja, int j, int ni, int ic0)

@@ -13,58 +13,11 @@
 
 #include "fast_lanes.h"
 #include "fast_raster.h"
+#include "fast_ref.h"
 #include "fast_tiny.h"
+#include "mesh_rec.h"
 #include "mesh_fragment.h"
 #include "mesh_internal.h"
-
-/* The reference's vertex record of grid vertex (i, j), computed when a square first needs it. */
-static void fast_full_vertex(retro_mesh_ctx *mc, uint32_t *done, int stride, int Ia, int Ja, int i, int j)
-{
-    if (done[j] >> i & 1u)
-        return;
-    done[j] |= 1u << i;
-    const mesh_frame *f = &mc->f;
-    int at = j * stride + i;
-    mesh_vert *v = &mc->grid[at];
-    mesh_vertex_stage(f, Ia + i, Ja + j, v);
-    double d[6];
-    mesh_plane_distances(f, v, d);
-    mesh_snap *s = &mc->snap[at];
-    s->out = 0;
-    for (int p = 0; p < 6; p++)
-        s->out |= d[p] < 0 ? 1u << p : 0u;
-    s->ok = s->out == 0;
-    if (s->ok)
-        mesh_project(f, v, &s->X, &s->Y);
-}
-
-/* A triangle of an inside square whose attributes the nearest raster does not carry (shade,
- * texture, gouraud): the reference's triangle record, handed to the reference scan conversion. */
-static void fast_generic(retro_mesh_ctx *mc, const int idx[3], const double sx[3], const double sy[3], int I, int J,
-                         int back, const int32_t X[3], const int32_t Y[3])
-{
-    const mesh_frame *f = &mc->f;
-    mesh_tri t;
-    for (int k = 0; k < 3; k++) {
-        t.v[k] = mc->grid[idx[k]];
-        t.v[k].a[A_SX] = sx[k];
-        t.v[k].a[A_SY] = sy[k];
-    }
-    t.I = fast_wrap(I, f->S);
-    t.J = fast_wrap(J, f->S);
-    t.water = 0;
-    t.back = back;
-    mesh_sub s;
-    for (int q = 0; q < 3; q++) {
-        s.X[q] = X[q];
-        s.Y[q] = Y[q];
-        s.v[q] = &t.v[q];
-    }
-    s.edges = 7;
-    s.t = &t;
-    mesh_scan_convert(mc, &s);
-}
-
 
 typedef struct {
     unsigned slow, cand[2], tiny[2], back[2];
@@ -81,8 +34,8 @@ typedef struct {
 static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int ni, fast_row *R, fast_counts *n)
 {
     const int nocull = (f->mfx & RETRO_MESH_FX_NOCULL) != 0, water = (f->fx & RETRO_FX_WATER) != 0;
-    const int lanes_ok = !((f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD |
-                                                                    RETRO_MESH_FX_WIREFRAME)));
+    const int generic = (f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD));
+    const int lanes_ok = !generic && !(f->mfx & RETRO_MESH_FX_WIREFRAME);
     static const float fsx[2][3] = {{0.5f, 1.5f, 1.5f}, {0.5f, 0.5f, 1.5f}}, fsy[2][3] = {{0.5f, 1.5f, 0.5f}, {0.5f, 1.5f, 1.5f}};
     const vi zi = vi_set1(0);
     const vf zf = vf_set1(0.0f);
@@ -142,8 +95,8 @@ static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int
             unsigned small, two_c, two_r;
             const unsigned in = ok & fast_bbox(f, x3[0], y3[0], x3[1], y3[1], x3[2], y3[2], &c0, &r0, &small, &two_c, &two_r);
             const unsigned tiny = lanes_ok ? in & small & pos : 0;
-            /* the others count themselves when scan conversion takes them */
-            n->rast += (uint64_t)(__builtin_popcount(ok & ~in) + __builtin_popcount(tiny));
+            /* A != 0 with the orientation drawn: rasterized (scan conversion counts the generic ones) */
+            n->rast += (uint64_t)__builtin_popcount(generic ? ok & ~in : ok);
             R->cand[t] |= (in & ~tiny) << i0;
             if (!tiny)
                 continue;
@@ -185,11 +138,55 @@ static inline void fast_tiny_draw(retro_mesh_ctx *mc, const fast_row *R, int t, 
     }
 }
 
+/* mesh-omp's first pass: the same drawing as words (mesh_rec.h). */
+static inline void fast_tiny_record(mesh_recbuf *rec, const mesh_frame *f, const fast_row *R, int t, int i, int I, int J)
+{
+    const fast_tiny *T = &R->tt[t];
+    const int S = f->S;
+    for (int n = 0; n < 4; n++) {
+        if (!(T->cov[n] >> i & 1u))
+            continue;
+        uint32_t *p = rec_room(rec, 4);
+        if (!p)
+            return;
+        const int r = R->r0[t][i] + (n >> 1), c = R->c0[t][i] + (n & 1);
+        int ci = I + (int)(T->sxb[n] >> i & 1u), cj = J + (int)(T->syb[n] >> i & 1u);
+        ci -= ci == S ? S : 0;
+        cj -= cj == S ? S : 0;
+        p[0] = REC_FRAG;
+        p[1] = (uint32_t)((size_t)(f->H - r) * (size_t)f->W + (size_t)c);
+        p[2] = rec_fbits(T->z[n][i]);
+        p[3] = (uint32_t)((size_t)cj * (size_t)S + (size_t)ci);
+    }
+}
+
+static inline void fast_record(mesh_recbuf *rec, uint32_t head, const int32_t X[3], const int32_t Y[3], const float *q,
+                               int I, int J)
+{
+    uint32_t *p = rec_room(rec, q ? 12 : 9);
+    if (!p)
+        return;
+    p[0] = head;
+    if (!q) /* REC_GENERIC: I, J, X, Y */
+        p[1] = (uint32_t)I, p[2] = (uint32_t)J, p += 3;
+    else
+        p++;
+    for (int k = 0; k < 3; k++) {
+        p[k] = (uint32_t)X[k];
+        p[3 + k] = (uint32_t)Y[k];
+        if (q)
+            p[6 + k] = rec_fbits(q[k]);
+    }
+    if (q) /* REC_BIG: X, Y, q, I, J */
+        p[9] = (uint32_t)I, p[10] = (uint32_t)J;
+}
+
 void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy)
 {
     const mesh_frame *f = &mc->f;
     const int ni = Ib - Ia + 1, nj = Jb - Ja + 1, stride = ni + 1;
     const int generic = (f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD));
+    mesh_recbuf *rec = mc->rec;
     fast_soa b;
     float dxv[FR];
     for (int i = 0; i < FR; i++)
@@ -229,6 +226,12 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
             m &= ~(1u << i);
             const int I = Ia + i, J = Ja + j;
             if (R->slow >> i & 1u) {
+                uint32_t *p;
+                if (rec) {
+                    if ((p = rec_room(rec, 3)) != NULL)
+                        p[0] = REC_SLOW, p[1] = (uint32_t)I, p[2] = (uint32_t)J;
+                    continue;
+                }
                 fast_full_vertex(mc, done, stride, Ia, Ja, i, j);
                 fast_full_vertex(mc, done, stride, Ia, Ja, i + 1, j);
                 fast_full_vertex(mc, done, stride, Ia, Ja, i + 1, j + 1);
@@ -241,7 +244,10 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
             for (int n = 0; n < 2; n++) {
                 const int t = n ? 1 - first : first;
                 if (R->tiny[t] >> i & 1u) {
-                    fast_tiny_draw(mc, R, t, i, iw[i], jw[j], &written);
+                    if (rec)
+                        fast_tiny_record(rec, f, R, t, i, iw[i], jw[j]);
+                    else
+                        fast_tiny_draw(mc, R, t, i, iw[i], jw[j], &written);
                     continue;
                 }
                 if (!(R->cand[t] >> i & 1u))
@@ -253,7 +259,16 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
                     X[k] = b.X[vj[k]][vi_[k]];
                     Y[k] = b.Y[vj[k]][vi_[k]];
                 }
-                if (generic) {
+                if (rec) {
+                    const int back = (int)(R->back[t] >> i & 1u);
+                    float q[3];
+                    for (int k = 0; k < 3; k++)
+                        q[k] = b.q[vj[k]][vi_[k]];
+                    if (generic)
+                        fast_record(rec, REC_GENERIC | (uint32_t)t << 8 | (uint32_t)back << 16, X, Y, NULL, I, J);
+                    else
+                        fast_record(rec, REC_BIG | (uint32_t)t << 8, X, Y, q, iw[i], jw[j]);
+                } else if (generic) {
                     int idx[3];
                     for (int k = 0; k < 3; k++) {
                         fast_full_vertex(mc, done, stride, Ia, Ja, vi_[k], vj[k]);
