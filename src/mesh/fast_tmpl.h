@@ -153,6 +153,7 @@ static inline void fast_tiny_record(mesh_recbuf *rec, const mesh_frame *f, const
         int ci = I + (int)(T->sxb[n] >> i & 1u), cj = J + (int)(T->syb[n] >> i & 1u);
         ci -= ci == S ? S : 0;
         cj -= cj == S ? S : 0;
+        rec_rows(rec, r, r);
         p[0] = REC_FRAG;
         p[1] = (uint32_t)((size_t)(f->H - r) * (size_t)f->W + (size_t)c);
         p[2] = rec_fbits(T->z[n][i]);
@@ -160,9 +161,10 @@ static inline void fast_tiny_record(mesh_recbuf *rec, const mesh_frame *f, const
     }
 }
 
-static inline void fast_record(mesh_recbuf *rec, uint32_t head, const int32_t X[3], const int32_t Y[3], const float *q,
-                               int I, int J)
+static inline void fast_record(mesh_recbuf *rec, int H, uint32_t head, const int32_t X[3], const int32_t Y[3],
+                               const float *q, int I, int J)
 {
+    rec_rows_of(rec, Y, H);
     uint32_t *p = rec_room(rec, q ? 12 : 9);
     if (!p)
         return;
@@ -230,6 +232,7 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
                 if (rec) {
                     if ((p = rec_room(rec, 3)) != NULL)
                         p[0] = REC_SLOW, p[1] = (uint32_t)I, p[2] = (uint32_t)J;
+                    rec_rows(rec, 1, f->H); /* clipping decides */
                     continue;
                 }
                 fast_full_vertex(mc, done, stride, Ia, Ja, i, j);
@@ -265,9 +268,9 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
                     for (int k = 0; k < 3; k++)
                         q[k] = b.q[vj[k]][vi_[k]];
                     if (generic)
-                        fast_record(rec, REC_GENERIC | (uint32_t)t << 8 | (uint32_t)back << 16, X, Y, NULL, I, J);
+                        fast_record(rec, f->H, REC_GENERIC | (uint32_t)t << 8 | (uint32_t)back << 16, X, Y, NULL, I, J);
                     else
-                        fast_record(rec, REC_BIG | (uint32_t)t << 8, X, Y, q, iw[i], jw[j]);
+                        fast_record(rec, f->H, REC_BIG | (uint32_t)t << 8, X, Y, q, iw[i], jw[j]);
                 } else if (generic) {
                     int idx[3];
                     for (int k = 0; k < 3; k++) {

@@ -135,6 +135,7 @@ typedef struct {
     uint32_t *w;
     size_t n, cap;
     int oom;
+    int rmin, rmax; /* the rows the records since the caller's reset can draw in */
 } mesh_recbuf;
 
 struct retro_mesh_ctx {

@@ -14,6 +14,7 @@
  * Threads are pinned with hwloc one per core for the frame and get their former binding back
  * after it. */
 #include <hwloc.h>
+#include <limits.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +33,7 @@ struct mesh_omp {
     mesh_recbuf rec[MESH_MAX_THREADS];     /* each thread's records of the blocks it took */
     int *owner;                            /* block k: recorded by thread owner[k] ... */
     size_t *from, *to;                     /* ... as words from[k] .. to[k] of its buffer */
+    int (*rows)[2];                        /* drawing in rows rows[k][0] .. rows[k][1] */
     size_t blocks_cap;
     retro_mesh_stats geo[MESH_MAX_THREADS]; /* each thread's counts in pass 1 */
     hwloc_topology_t topo;
@@ -58,6 +60,7 @@ void mesh_omp_free(struct mesh_omp *o)
     free(o->owner);
     free(o->from);
     free(o->to);
+    free(o->rows);
     free(o);
 }
 
@@ -145,7 +148,10 @@ static int block_index(struct mesh_omp *o, size_t n)
     size_t *to = realloc(o->to, n * sizeof *to);
     if (to)
         o->to = to;
-    if (!ow || !fr || !to)
+    int(*rows)[2] = realloc(o->rows, n * sizeof *rows);
+    if (rows)
+        o->rows = rows;
+    if (!ow || !fr || !to || !rows)
         return -1;
     o->blocks_cap = n;
     return 0;
@@ -198,10 +204,15 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
         int bound = bind_core(o, t, o->saved[t]);
 #pragma omp for schedule(dynamic, 4)
         for (long k = 0; k < nb; k++) {
-            o->from[k] = o->rec[t].n;
+            mesh_recbuf *r = &o->rec[t];
+            o->from[k] = r->n;
+            r->rmin = INT_MAX;
+            r->rmax = INT_MIN;
             mesh_block_draw(s, o->blocks.b[k]);
             o->owner[k] = t;
-            o->to[k] = o->rec[t].n;
+            o->to[k] = r->n;
+            o->rows[k][0] = r->rmin;
+            o->rows[k][1] = r->rmax;
         }
         /* (the loop's barrier: every record is complete) */
         o->geo[t] = s->st;
@@ -213,7 +224,7 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
         if (s->f.rlo <= s->f.rhi) {
             for (long k = 0; k < nb; k++) {
                 const mesh_recbuf *r = &o->rec[o->owner[k]];
-                if (!r->oom)
+                if (!r->oom && o->rows[k][0] <= s->f.rhi && o->rows[k][1] >= s->f.rlo)
                     mesh_replay(s, r->w + o->from[k], o->to[k] - o->from[k]);
             }
             mesh_water_draw(s);

@@ -36,6 +36,23 @@ static inline uint32_t *rec_room(mesh_recbuf *r, size_t k)
     return p;
 }
 
+/* The records drawn so far may touch rows lo..hi. */
+static inline void rec_rows(mesh_recbuf *r, int lo, int hi)
+{
+    r->rmin = lo < r->rmin ? lo : r->rmin;
+    r->rmax = hi > r->rmax ? hi : r->rmax;
+}
+
+/* Rows of the snapped bounding box of (Y[0], Y[1], Y[2]) on a screen of H rows. */
+static inline void rec_rows_of(mesh_recbuf *r, const int32_t Y[3], int H)
+{
+    int32_t lo = Y[0] < Y[1] ? Y[0] : Y[1], hi = Y[0] > Y[1] ? Y[0] : Y[1];
+    lo = Y[2] < lo ? Y[2] : lo;
+    hi = Y[2] > hi ? Y[2] : hi;
+    int r0 = (lo + 255) >> 8, r1 = hi >> 8; /* ceil and floor of a / 256 */
+    rec_rows(r, r0 < 1 ? 1 : r0, r1 > H ? H : r1);
+}
+
 static inline uint32_t rec_fbits(float x)
 {
     uint32_t u;
