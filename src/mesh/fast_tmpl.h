@@ -31,7 +31,8 @@ typedef struct {
 
 /* Row j of squares, in lanes: which squares go to the reference path (slow), which triangles
  * of each kind survive to a raster (cand) or are tiny and cover a centre (tiny). */
-static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int ni, fast_row *R, fast_counts *n)
+static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int ni, int recording, fast_row *R,
+                              fast_counts *n)
 {
     const int nocull = (f->mfx & RETRO_MESH_FX_NOCULL) != 0, water = (f->fx & RETRO_FX_WATER) != 0;
     const int generic = (f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD));
@@ -95,8 +96,9 @@ static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int
             unsigned small, two_c, two_r;
             const unsigned in = ok & fast_bbox(f, x3[0], y3[0], x3[1], y3[1], x3[2], y3[2], &c0, &r0, &small, &two_c, &two_r);
             const unsigned tiny = lanes_ok ? in & small & pos : 0;
-            /* A != 0 with the orientation drawn: rasterized (scan conversion counts the generic ones) */
-            n->rast += (uint64_t)__builtin_popcount(generic ? ok & ~in : ok);
+            /* A != 0 with the orientation drawn: rasterized (scan conversion counts the generic ones
+             * it draws; those recorded are counted here, where each is seen once) */
+            n->rast += (uint64_t)__builtin_popcount(generic && !recording ? ok & ~in : ok);
             R->cand[t] |= (in & ~tiny) << i0;
             if (!tiny)
                 continue;
@@ -205,7 +207,7 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
     fast_row rows[MESH_BLOCK];
     fast_counts cnt = {0, 0, 0, 0, 0};
     for (int j = 0; j < nj; j++)
-        fast_classify_row(f, &b, j, ni, &rows[j], &cnt);
+        fast_classify_row(f, &b, j, ni, mc->rec != NULL, &rows[j], &cnt);
     mc->st.submitted += cnt.submitted;
     mc->st.culled += cnt.culled;
     mc->st.clipped_out += cnt.clipped_out;

@@ -62,7 +62,9 @@ void mesh_replay(retro_mesh_ctx *mc, const uint32_t *w, size_t n)
                 Y[c] = (int32_t)p[6 + c];
             }
             corners(mc, I, J);
+            const uint64_t counted = mc->st.rasterized; /* by the block stage that recorded it */
             fast_generic(mc, cidx[t], tsx[t], tsy[t], I, J, (int)(p[0] >> 16 & 1u), X, Y);
+            mc->st.rasterized = counted;
             k += 9;
             break;
         }
