@@ -29,4 +29,7 @@ void mesh_counters(void *state, const BenchCase *c, const struct retro_ctx *rc);
 // The mesh tables for BENCH.md (mesh_report.cc); nothing when no mesh case ran.
 void mesh_table(std::ostream &o, const BenchPlan &plan);
 
+// The mesh sweeps' charts (bench-mesh-resolution, bench-mesh-distance) for the gnuplot script.
+void mesh_charts(std::ostream &o, const BenchPlan &plan);
+
 #endif

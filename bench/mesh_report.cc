@@ -147,16 +147,51 @@ static void summary(std::ostream &o, const BenchPlan &plan)
     }
 }
 
-// A sweep: the mesh sweep rows and the voxel sweep's fastest kernel at each point, and the
-// best mesh time over the best voxel time.
+// A sweep's data: the mesh sweep rows, then the voxel sweep's fastest kernel, ms/frame at each
+// point (W, H, D).
+struct SweepRow {
+    std::string cell, label; // markdown cell, plain chart label
+    bool voxel;
+    std::vector<double> ms;
+};
+
+static std::vector<SweepRow> sweep_data(const BenchPlan &plan, unsigned voxel_group,
+                                        const std::vector<std::array<int, 3>> &points)
+{
+    std::vector<SweepRow> out;
+    for (auto [k, t] : mesh_rows(plan, GROUP_MESH_SWEEP)) {
+        bool thr = k->flags & RETRO_KF_THREADED;
+        SweepRow r{kernel_cell(k, t), std::string(k->name) + (thr ? ", " + std::to_string(t) + " threads" : ""),
+                   false, {}};
+        for (const auto &p : points) {
+            const BenchCase *c = mesh_find(plan, k, t, plan.sweep_scene, p[0], p[1], p[2]);
+            r.ms.push_back(mesh_ok(c) ? c->median_ms : NaN);
+        }
+        out.push_back(r);
+    }
+    const retro_kernel *vk = retro_kernel_best(RETRO_MODE_EXACT);
+    if (out.empty() || !vk)
+        return out;
+    const int vt = plan_thread_counts(vk, plan.cores).back();
+    bool thr = vk->flags & RETRO_KF_THREADED;
+    SweepRow r{std::string("`") + vk->name + "`" + (thr ? " " + std::to_string(vt) + "t" : ""),
+               std::string(vk->name) + (thr ? ", " + std::to_string(vt) + " threads" : "") + " (voxel, exact)", true,
+               {}};
+    for (const auto &p : points) {
+        const BenchCase *c = plan.find(vk, vt, plan.sweep_scene, RETRO_MODE_EXACT, p[0], p[1], p[2]);
+        r.ms.push_back(c && (c->groups & voxel_group) && mesh_ok(c) ? c->median_ms : NaN);
+    }
+    out.push_back(r);
+    return out;
+}
+
+// A sweep table, with the best mesh time over the best voxel time at each point.
 static void sweep(std::ostream &o, const BenchPlan &plan, const std::string &title, unsigned voxel_group,
                   const std::vector<std::string> &heads, const std::vector<std::array<int, 3>> &points)
 {
-    const auto rows = mesh_rows(plan, GROUP_MESH_SWEEP);
+    const std::vector<SweepRow> rows = sweep_data(plan, voxel_group, points);
     if (rows.empty())
         return;
-    const retro_kernel *vk = retro_kernel_best(RETRO_MODE_EXACT);
-    const int vt = vk ? plan_thread_counts(vk, plan.cores).back() : 1;
     o << "\n### " << title << "\n\n| kernel | family |";
     for (const std::string &h : heads)
         o << " " << h << " |";
@@ -164,32 +199,87 @@ static void sweep(std::ostream &o, const BenchPlan &plan, const std::string &tit
     for (size_t i = 0; i < heads.size(); i++)
         o << "--:|";
     o << "\n";
-    std::vector<double> best(points.size(), NaN), vox(points.size(), NaN);
-    for (auto [k, t] : rows) {
-        o << "| " << kernel_cell(k, t) << " | mesh |";
+    std::vector<double> best(points.size(), NaN);
+    for (const SweepRow &r : rows) {
+        o << "| " << r.cell << " | " << (r.voxel ? "voxel (mode exact)" : "mesh") << " |";
         for (size_t i = 0; i < points.size(); i++) {
-            const BenchCase *c = mesh_find(plan, k, t, plan.sweep_scene, points[i][0], points[i][1], points[i][2]);
-            double v = mesh_ok(c) ? c->median_ms : NaN;
-            if (!std::isnan(v) && (std::isnan(best[i]) || v < best[i]))
-                best[i] = v;
-            o << " " << report_ms_cell(v) << " |";
+            if (!r.voxel && !std::isnan(r.ms[i]) && (std::isnan(best[i]) || r.ms[i] < best[i]))
+                best[i] = r.ms[i];
+            o << " " << report_ms_cell(r.ms[i]) << " |";
         }
         o << "\n";
     }
-    if (vk) {
-        o << "| `" << vk->name << "`" << (vk->flags & RETRO_KF_THREADED ? " " + std::to_string(vt) + "t" : "")
-          << " | voxel (mode exact) |";
-        for (size_t i = 0; i < points.size(); i++) {
-            const BenchCase *c = plan.find(vk, vt, plan.sweep_scene, RETRO_MODE_EXACT, points[i][0], points[i][1],
-                                           points[i][2]);
-            vox[i] = c && (c->groups & voxel_group) && mesh_ok(c) ? c->median_ms : NaN;
-            o << " " << report_ms_cell(vox[i]) << " |";
-        }
-        o << "\n| best mesh ÷ best voxel | |";
+    if (rows.back().voxel) {
+        o << "| best mesh ÷ best voxel | |";
         for (size_t i = 0; i < points.size(); i++)
-            o << " " << ratio_cell(best[i] / vox[i]) << " |";
+            o << " " << ratio_cell(best[i] / rows.back().ms[i]) << " |";
         o << "\n";
     }
+}
+
+static std::string gp_num(double v)
+{
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return std::isnan(v) ? "NaN" : b;
+}
+
+// One log-log chart of a sweep (the gnuplot conventions of bench_charts.cc).
+static void sweep_chart(std::ostream &o, const BenchPlan &plan, unsigned voxel_group, const char *block,
+                        const std::vector<std::string> &labels, const std::vector<double> &xs,
+                        const std::vector<std::array<int, 3>> &points, const std::string &title, const char *xlabel)
+{
+    const std::vector<SweepRow> rows = sweep_data(plan, voxel_group, points);
+    if (rows.empty())
+        return;
+    std::string data = "$";
+    for (const char *c = block; *c; c++) /* a data block's name is an identifier */
+        if (*c != '-')
+            data += *c;
+    o << data << " << EOD\n";
+    for (size_t i = 0; i < points.size(); i++) {
+        o << "\"" << labels[i] << "\" " << gp_num(xs[i]);
+        for (const SweepRow &r : rows)
+            o << " " << gp_num(r.ms[i]);
+        o << "\n";
+    }
+    o << "EOD\nreset\nset output out.'/bench-" << block << ".'.ext\nset title \"" << title << "\"\nset xlabel '"
+      << xlabel << "'\nset ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n"
+      << "set key top left\nplot";
+    for (size_t j = 0; j < rows.size(); j++)
+        o << (j ? ", ''" : (" " + data)) << " using 2:" << j + 3 << (j ? "" : ":xtic(1)")
+          << " with linespoints lw 2 pt " << (rows[j].voxel ? 5 : 7) << " title \"" << rows[j].label << "\"";
+    o << "\n\n";
+}
+
+void mesh_charts(std::ostream &o, const BenchPlan &plan)
+{
+    if (!plan.sweep_scene)
+        return;
+    std::vector<std::string> labels;
+    std::vector<double> xs;
+    std::vector<std::array<int, 3>> points;
+    for (auto [w, h] : plan.resolutions) {
+        labels.push_back(std::to_string(w) + "x" + std::to_string(h));
+        xs.push_back(w * static_cast<double>(h) / 1e6);
+        points.push_back({w, h, plan.D});
+    }
+    sweep_chart(o, plan, GROUP_RESOLUTION, "mesh-resolution", labels, xs, points,
+                std::string("mesh and voxel ms/frame against resolution: ") + plan.sweep_scene->name + ", D " +
+                    std::to_string(plan.D),
+                "Mpixel per frame (log scale)");
+    labels.clear();
+    xs.clear();
+    points.clear();
+    for (int d : plan.distances) {
+        labels.push_back(std::to_string(d));
+        xs.push_back(d);
+        points.push_back({plan.W, plan.H, d});
+    }
+    sweep_chart(o, plan, GROUP_DISTANCE, "mesh-distance", labels, xs, points,
+                std::string("mesh and voxel ms/frame against distance: ") + plan.sweep_scene->name + ", " +
+                    std::to_string(plan.W) + "x" + std::to_string(plan.H),
+                "distance D (log scale)");
 }
 
 void mesh_table(std::ostream &o, const BenchPlan &plan)
@@ -221,4 +311,7 @@ void mesh_table(std::ostream &o, const BenchPlan &plan)
               std::to_string(plan.W) + "×" + std::to_string(plan.H) +
               ", median ms/frame (mesh: binary32, back faces culled; the mesh's far plane stops at 4096)",
           GROUP_DISTANCE, heads, points);
+    if (!mesh_rows(plan, GROUP_MESH_SWEEP).empty())
+        o << "\n![mesh and voxel ms/frame against resolution](bench-mesh-resolution.svg)\n"
+          << "![mesh and voxel ms/frame against distance](bench-mesh-distance.svg)\n";
 }
