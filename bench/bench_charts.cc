@@ -2,6 +2,7 @@
 // then the plots. The terminal is chosen by whoever runs it (scripts/bench.sh), so the same
 // script yields SVG and, where gnuplot has it, PNG.
 #include "bench_report.h"
+#include "mesh_cases.h"
 #include "busy.h"
 
 #include <algorithm>
@@ -167,5 +168,6 @@ bool write_charts_gp(const std::string &path, const BenchPlan &plan, const RunCo
                         std::to_string(plan.H),
                     "distance D, samples per column (log scale)");
     }
+    mesh_charts(o, plan);
     return report_write_file(path, o.str());
 }

@@ -22,6 +22,7 @@ enum : unsigned {
     GROUP_EFFECTS = 1u << 4,    // extras.cc: what each effect costs
     GROUP_PEER = 1u << 5,       // peer_cases.cc: the classic demo's algorithm, not a kernel
     GROUP_MESH = 1u << 6,       // mesh_cases.cc: the mesh family's kernels, mode binary32
+    GROUP_MESH_SWEEP = 1u << 7, // mesh_cases.cc: the mesh kernels swept over resolution, distance
 };
 
 struct BenchCase {

@@ -2,6 +2,7 @@
  * colour nearest (with fog and wireframe): the loop of raster_tmpl.h with only the attributes
  * this colour source reads (sx, sy), the vertex reciprocals 1/z from the vertex stage's lanes,
  * and the setup deferred until the bounding box is known to hold a pixel centre of its rows.
+ * The caller counts the triangle as rasterized (A != 0 with the orientation it draws).
  * Every operation is raster_tmpl.h's, in its order, so the bytes are mesh-zbuffer's. */
 #ifndef RETRO_MESH_FAST_RASTER_H
 #define RETRO_MESH_FAST_RASTER_H
@@ -53,7 +54,6 @@ static void fast_raster_nearest(retro_mesh_ctx *mc, const int32_t X3[3], const i
         u = ay[1], ay[1] = ay[2], ay[2] = u;
         A = -A;
     }
-    mc->st.rasterized++;
     int64_t xmin = X[0], xmax = X[0], ymin = Y[0], ymax = Y[0];
     for (int k = 1; k < 3; k++) {
         xmin = X[k] < xmin ? X[k] : xmin;

@@ -30,6 +30,8 @@
 #define mesh_frame_passes retro_mesh_frame_passes
 #define mesh_omp_render retro_mesh_omp_render
 #define mesh_omp_free retro_mesh_omp_free
+#define mesh_block_draw retro_mesh_block_draw
+#define mesh_replay retro_mesh_replay
 #pragma GCC visibility push(hidden)
 
 #define MESH_SUB RETRO_MESH_SUBPIXEL_BITS
@@ -120,6 +122,22 @@ typedef struct {
     unsigned out;       /* bit p: outside plane p */
 } mesh_snap;
 
+/* mesh-omp's two passes (mesh_omp.c): the blocks traversal would draw, listed in its order (6
+ * ints each: Ia, Ib, Ja, Jb, sx, sy), and a block stage's drawing recorded as a stream of words
+ * (mesh_rec.h) for each band to replay. A buffer that cannot grow sets oom. */
+typedef struct {
+    int32_t (*b)[6];
+    size_t n, cap;
+    int oom;
+} mesh_blocks;
+
+typedef struct {
+    uint32_t *w;
+    size_t n, cap;
+    int oom;
+    int rmin, rmax; /* the rows the records since the caller's reset can draw in */
+} mesh_recbuf;
+
 struct retro_mesh_ctx {
     mesh_frame f;
     void *depth;          /* W*H float, double or uint32 by mode */
@@ -134,6 +152,8 @@ struct retro_mesh_ctx {
     size_t fogtab_cap;
     uint32_t *out;
     struct mesh_omp *omp; /* mesh-omp's threads and their contexts (mesh_omp.c), or NULL */
+    mesh_blocks *collect; /* non-NULL: traversal lists its blocks here instead of drawing them */
+    mesh_recbuf *rec;     /* non-NULL: the fast block stage records its drawing here */
     retro_mesh_stats st;
     int oom;              /* a water buffer could not grow */
     char err[160];
@@ -162,6 +182,10 @@ void mesh_raster_f64(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int
 void mesh_raster_int(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int64_t E0[3],
                      const int64_t dx[3], const int64_t dy[3], int c0, int c1, int r0, int r1);
 void mesh_traverse(retro_mesh_ctx *mc);
+/* One listed block (mesh_blocks) through the frame's block stage. */
+void mesh_block_draw(retro_mesh_ctx *mc, const int32_t b[6]);
+/* Draws a recorded stream (mesh_rec.h) in mc's rows rlo..rhi. */
+void mesh_replay(retro_mesh_ctx *mc, const uint32_t *w, size_t n);
 void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t);
 void mesh_water_draw(retro_mesh_ctx *mc);
 /* The fast kernels' block stage: squares [Ia, Ib] x [Ja, Jb] of a block not culled, in the

@@ -1,13 +1,20 @@
-/* mesh-omp: the fast kernel on every thread, each drawing one band of rows. Bands are
- * contiguous; a thread culls the blocks that lie outside its band (the band's bottom and top
- * planes join the frustum's in block culling), so the geometry is shared out as well as the
- * raster. Each pixel still sees exactly the serial kernel's sequence of fragments, water blends
- * included (every thread sorts the same water list and blends only its rows), so the bytes do
- * not depend on the thread count, the band boundaries or the schedule. The boundaries follow
- * the previous frame's per-thread times (the terrain is not spread evenly over the rows); that
- * changes only who draws a row, never what is drawn. Threads are pinned with hwloc one per
- * core for the frame and get their former binding back after it. */
+/* mesh-omp: the fast kernel's work split over threads in two passes, so that no thread repeats
+ * another's geometry and the raster is shared out by rows.
+ * 1. The blocks traversal does not cull are listed in its order; the threads take them
+ *    dynamically and run the fast block stage on each in recording mode (mesh_rec.h): vertex
+ *    stage, classification, tiny triangles up to their depth tests, all done once per block.
+ * 2. Each thread owns one band of contiguous rows and replays every block's record in the list's
+ *    order (mesh_replay.c), drawing only its rows: the depth tests of tiny triangles, the raster
+ *    of larger ones, the reference stages for squares that need clipping, then the water pass
+ *    (every band sorts the same water list and blends only its rows).
+ * Each pixel therefore sees exactly the serial kernel's sequence of fragments: the bytes do not
+ * depend on the thread count, which thread recorded a block, the band boundaries or the
+ * schedule. The boundaries follow the previous frame's second-pass times (the terrain is not
+ * spread evenly over the rows); that changes only who draws a row, never what is drawn.
+ * Threads are pinned with hwloc one per core for the frame and get their former binding back
+ * after it. */
 #include <hwloc.h>
+#include <limits.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +29,13 @@ struct mesh_omp {
     int cut[MESH_MAX_THREADS + 1];         /* band t: rows cut[t] + 1 .. cut[t + 1] */
     double secs[MESH_MAX_THREADS];         /* each band's time in the previous frame */
     int last_T, last_H;
+    mesh_blocks blocks;                    /* pass 1's blocks, in traversal order */
+    mesh_recbuf rec[MESH_MAX_THREADS];     /* each thread's records of the blocks it took */
+    int *owner;                            /* block k: recorded by thread owner[k] ... */
+    size_t *from, *to;                     /* ... as words from[k] .. to[k] of its buffer */
+    int (*rows)[2];                        /* drawing in rows rows[k][0] .. rows[k][1] */
+    size_t blocks_cap;
+    retro_mesh_stats geo[MESH_MAX_THREADS]; /* each thread's counts in pass 1 */
     hwloc_topology_t topo;
     int have_topo, cores;
 };
@@ -40,6 +54,13 @@ void mesh_omp_free(struct mesh_omp *o)
             hwloc_bitmap_free(o->saved[t]);
     if (o->have_topo)
         hwloc_topology_destroy(o->topo);
+    for (int t = 0; t < MESH_MAX_THREADS; t++)
+        free(o->rec[t].w);
+    free(o->blocks.b);
+    free(o->owner);
+    free(o->from);
+    free(o->to);
+    free(o->rows);
     free(o);
 }
 
@@ -113,6 +134,37 @@ static void plan_bands(struct mesh_omp *o, int T, int H)
         o->cut[t] = cut[t];
 }
 
+/* Room for pass 1's index of n blocks. */
+static int block_index(struct mesh_omp *o, size_t n)
+{
+    if (n <= o->blocks_cap)
+        return 0;
+    int *ow = realloc(o->owner, n * sizeof *ow);
+    if (ow)
+        o->owner = ow;
+    size_t *fr = realloc(o->from, n * sizeof *fr);
+    if (fr)
+        o->from = fr;
+    size_t *to = realloc(o->to, n * sizeof *to);
+    if (to)
+        o->to = to;
+    int(*rows)[2] = realloc(o->rows, n * sizeof *rows);
+    if (rows)
+        o->rows = rows;
+    if (!ow || !fr || !to || !rows)
+        return -1;
+    o->blocks_cap = n;
+    return 0;
+}
+
+static void add_geometry(retro_mesh_stats *d, const retro_mesh_stats *s)
+{
+    d->submitted += s->submitted;
+    d->culled += s->culled;
+    d->clipped_out += s->clipped_out;
+    d->rasterized += s->rasterized;
+}
+
 retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
 {
     int T = threads > 0 ? threads : omp_get_max_threads();
@@ -122,43 +174,85 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
         strcpy(mc->err, "out of memory");
         return RETRO_MESH_ENOMEM;
     }
+    o->blocks.n = 0;
+    o->blocks.oom = 0;
+    mc->collect = &o->blocks;
+    mesh_traverse(mc);
+    mc->collect = NULL;
+    if (o->blocks.oom || block_index(o, o->blocks.n)) {
+        strcpy(mc->err, "out of memory");
+        return RETRO_MESH_ENOMEM;
+    }
     plan_bands(o, T, mc->f.H);
     for (int t = 0; t < T; t++) {
         retro_mesh_ctx *s = o->sub[t];
-        s->f = mc->f;
-        s->f.rlo = o->cut[t] + 1;
-        s->f.rhi = o->cut[t + 1];
-        /* the band's planes: V >= rlo - 0.5 and V <= rhi + 0.5 */
-        s->f.bcb = mc->f.cy - (double)s->f.rlo + 0.5;
-        s->f.bct = (double)s->f.rhi + 0.5 - mc->f.cy;
+        s->f = mc->f; /* pass 1 records for the whole screen */
         s->depth = mc->depth;
         s->out = mc->out;
         memset(&s->st, 0, sizeof s->st);
         s->water_n = 0;
         s->oom = 0;
+        o->rec[t].n = 0;
+        o->rec[t].oom = 0;
+        s->rec = &o->rec[t];
     }
+    const long nb = (long)o->blocks.n;
 #pragma omp parallel num_threads(T)
     {
         int t = omp_get_thread_num();
+        retro_mesh_ctx *s = o->sub[t];
         int bound = bind_core(o, t, o->saved[t]);
+#pragma omp for schedule(dynamic, 4)
+        for (long k = 0; k < nb; k++) {
+            mesh_recbuf *r = &o->rec[t];
+            o->from[k] = r->n;
+            r->rmin = INT_MAX;
+            r->rmax = INT_MIN;
+            mesh_block_draw(s, o->blocks.b[k]);
+            o->owner[k] = t;
+            o->to[k] = r->n;
+            o->rows[k][0] = r->rmin;
+            o->rows[k][1] = r->rmax;
+        }
+        /* (the loop's barrier: every record is complete) */
+        o->geo[t] = s->st;
+        memset(&s->st, 0, sizeof s->st);
+        s->rec = NULL;
+        s->f.rlo = o->cut[t] + 1;
+        s->f.rhi = o->cut[t + 1];
         double t0 = omp_get_wtime();
-        if (o->sub[t]->f.rlo <= o->sub[t]->f.rhi)
-            mesh_frame_passes(o->sub[t]);
+        if (s->f.rlo <= s->f.rhi) {
+            for (long k = 0; k < nb; k++) {
+                const mesh_recbuf *r = &o->rec[o->owner[k]];
+                if (!r->oom && o->rows[k][0] <= s->f.rhi && o->rows[k][1] >= s->f.rlo)
+                    mesh_replay(s, r->w + o->from[k], o->to[k] - o->from[k]);
+            }
+            mesh_water_draw(s);
+        }
         o->secs[t] = omp_get_wtime() - t0;
         if (bound)
             hwloc_set_cpubind(o->topo, o->saved[t], HWLOC_CPUBIND_THREAD);
     }
-    /* Counts add up over the bands: geometry a band culls or shares is counted per band. */
+    /* Geometry: pass 1's counts, and those of the reference stages (squares that need clipping,
+     * generic triangles) once, from the first band that ran (every band runs the same ones);
+     * fragments: pass 1's tiny triangles and every band's rows; written: every band's. */
     memset(&mc->st, 0, sizeof mc->st);
+    int first = -1, rec_oom = 0;
     for (int t = 0; t < T; t++) {
         const retro_mesh_stats *b = &o->sub[t]->st;
-        mc->st.submitted += b->submitted;
-        mc->st.culled += b->culled;
-        mc->st.clipped_out += b->clipped_out;
-        mc->st.rasterized += b->rasterized;
-        mc->st.fragments += b->fragments;
+        add_geometry(&mc->st, &o->geo[t]);
+        mc->st.fragments += o->geo[t].fragments + b->fragments;
         mc->st.written += b->written;
         mc->oom |= o->sub[t]->oom;
+        rec_oom |= o->rec[t].oom;
+        if (first < 0 && o->cut[t] + 1 <= o->cut[t + 1])
+            first = t;
+    }
+    if (first >= 0)
+        add_geometry(&mc->st, &o->sub[first]->st);
+    if (rec_oom) {
+        strcpy(mc->err, "out of memory");
+        return RETRO_MESH_ENOMEM;
     }
     return RETRO_MESH_OK;
 }

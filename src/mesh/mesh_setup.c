@@ -93,10 +93,26 @@ static void direction(int angle, double *cs, double *sn)
     *sn = ssign[q] * ((q & 1) ? c0 : s0);
 }
 
+/* Every frame reads the whole map here: per-position minima and maxima over chunks of fixed
+ * length, which the compiler turns into byte-vector operations, reduced once at the end. */
 static void minmax(const uint8_t *h, size_t n, double *lo, double *hi)
 {
+    enum { CH = 32 };
+    uint8_t va[CH], vb[CH];
+    memset(va, 255, sizeof va);
+    memset(vb, 0, sizeof vb);
+    size_t i = 0;
+    for (; i + CH <= n; i += CH)
+        for (size_t k = 0; k < CH; k++) {
+            va[k] = h[i + k] < va[k] ? h[i + k] : va[k];
+            vb[k] = h[i + k] > vb[k] ? h[i + k] : vb[k];
+        }
     uint8_t a = 255, b = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t k = 0; k < CH; k++) {
+        a = va[k] < a ? va[k] : a;
+        b = vb[k] > b ? vb[k] : b;
+    }
+    for (; i < n; i++) {
         a = h[i] < a ? h[i] : a;
         b = h[i] > b ? h[i] : b;
     }

@@ -3,6 +3,7 @@
  * visibility order of the heightfield (docs/MESH.md, "Order"): the painter visits it as
  * written (back to front), the z-buffer in exact reverse (front to back). */
 #include <math.h>
+#include <stdlib.h>
 
 #include "mesh_internal.h"
 
@@ -37,6 +38,22 @@ static void block(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, in
     const mesh_frame *f = &mc->f;
     if (block_outside(f, Ia + 0.5, Ib + 1.5, Ja + 0.5, Jb + 1.5))
         return;
+    if (mc->collect) {
+        mesh_blocks *l = mc->collect;
+        if (l->n == l->cap) {
+            size_t cap = l->cap ? 2 * l->cap : 1024;
+            void *nb = realloc(l->b, cap * sizeof *l->b);
+            if (!nb) {
+                l->oom = 1;
+                return;
+            }
+            l->b = nb;
+            l->cap = cap;
+        }
+        int32_t *e = l->b[l->n++];
+        e[0] = Ia, e[1] = Ib, e[2] = Ja, e[3] = Jb, e[4] = sx, e[5] = sy;
+        return;
+    }
     if (f->fast == MESH_FAST_AVX512) {
         mesh_fast_block_avx512(mc, Ia, Ib, Ja, Jb, sx, sy);
         return;
@@ -142,4 +159,12 @@ void mesh_traverse(retro_mesh_ctx *mc)
             axis(mc, as[k][0], as[k][1], as[k][0] > 0 ? ip : as[k][0] < 0 ? im : as[k][1] > 0 ? jp : jm);
         block(mc, f->Ie, f->Ie, f->Je, f->Je, 0, 0);
     }
+}
+
+void mesh_block_draw(retro_mesh_ctx *mc, const int32_t b[6])
+{
+    if (mc->f.fast == MESH_FAST_AVX512)
+        mesh_fast_block_avx512(mc, b[0], b[1], b[2], b[3], b[4], b[5]);
+    else
+        mesh_fast_block_avx2(mc, b[0], b[1], b[2], b[3], b[4], b[5]);
 }

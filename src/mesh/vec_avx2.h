@@ -31,9 +31,11 @@ static inline vi vi_set1(int32_t a) { return _mm256_set1_epi32(a); }
 static inline vi vi_add(vi a, vi b) { return _mm256_add_epi32(a, b); }
 static inline vi vi_sub(vi a, vi b) { return _mm256_sub_epi32(a, b); }
 static inline vi vi_or(vi a, vi b) { return _mm256_or_si256(a, b); }
+static inline vi vi_and(vi a, vi b) { return _mm256_and_si256(a, b); }
 static inline vi vi_min(vi a, vi b) { return _mm256_min_epi32(a, b); }
 static inline vi vi_max(vi a, vi b) { return _mm256_max_epi32(a, b); }
 static inline vi vi_sra8(vi a) { return _mm256_srai_epi32(a, 8); }
+static inline vi vi_sll8(vi a) { return _mm256_slli_epi32(a, 8); }
 static inline vi vf_to_vi(vf a) { return _mm256_cvttps_epi32(a); } /* a integral, |a| < 2^31 */
 static inline unsigned vi_gt(vi a, vi b) { return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(a, b))); }
 static inline unsigned vi_eq(vi a, vi b) { return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(a, b))); }
@@ -61,5 +63,23 @@ static inline unsigned vi_cross(vi a, vi b, vi c, vi d, unsigned *zero)
     *zero = z;
     return pos;
 }
+
+/* Binary64 halves of an int32 vector (VH lanes each): exact edge functions of the tiny
+ * triangles (fast_tiny.h), whose products reach 2^46. */
+#define VH 4
+typedef __m256d vd;
+static inline vd vd_half(vi a, int h)
+{
+    return _mm256_cvtepi32_pd(h ? _mm256_extracti128_si256(a, 1) : _mm256_castsi256_si128(a));
+}
+static inline vd vd_add(vd a, vd b) { return _mm256_add_pd(a, b); }
+static inline vd vd_sub(vd a, vd b) { return _mm256_sub_pd(a, b); }
+static inline vd vd_mul(vd a, vd b) { return _mm256_mul_pd(a, b); }
+static inline vd vd_set1(double a) { return _mm256_set1_pd(a); }
+static inline unsigned vd_gt0(vd a) { return (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(a, _mm256_setzero_pd(), _CMP_GT_OQ)); }
+static inline unsigned vd_eq0(vd a) { return (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(a, _mm256_setzero_pd(), _CMP_EQ_OQ)); }
+/* each lane rounded once to binary32 (round to nearest, as a C conversion) */
+static inline vf vf_from_vd(vd lo, vd hi) { return _mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo)); }
+static inline unsigned vf_ge(vf a, vf b) { return (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(a, b, _CMP_GE_OQ)); }
 
 #endif

@@ -31,9 +31,11 @@ static inline vi vi_set1(int32_t a) { return _mm512_set1_epi32(a); }
 static inline vi vi_add(vi a, vi b) { return _mm512_add_epi32(a, b); }
 static inline vi vi_sub(vi a, vi b) { return _mm512_sub_epi32(a, b); }
 static inline vi vi_or(vi a, vi b) { return _mm512_or_si512(a, b); }
+static inline vi vi_and(vi a, vi b) { return _mm512_and_si512(a, b); }
 static inline vi vi_min(vi a, vi b) { return _mm512_min_epi32(a, b); }
 static inline vi vi_max(vi a, vi b) { return _mm512_max_epi32(a, b); }
 static inline vi vi_sra8(vi a) { return _mm512_srai_epi32(a, 8); }
+static inline vi vi_sll8(vi a) { return _mm512_slli_epi32(a, 8); }
 static inline vi vf_to_vi(vf a) { return _mm512_cvttps_epi32(a); } /* a integral, |a| < 2^31 */
 static inline unsigned vi_gt(vi a, vi b) { return (unsigned)_mm512_cmpgt_epi32_mask(a, b); }
 static inline unsigned vi_eq(vi a, vi b) { return (unsigned)_mm512_cmpeq_epi32_mask(a, b); }
@@ -58,5 +60,26 @@ static inline unsigned vi_cross(vi a, vi b, vi c, vi d, unsigned *zero)
     *zero = z;
     return pos;
 }
+
+/* Binary64 halves of an int32 vector (VH lanes each): exact edge functions of the tiny
+ * triangles (fast_tiny.h), whose products reach 2^46. */
+#define VH 8
+typedef __m512d vd;
+static inline vd vd_half(vi a, int h)
+{
+    return _mm512_cvtepi32_pd(h ? _mm512_extracti64x4_epi64(a, 1) : _mm512_castsi512_si256(a));
+}
+static inline vd vd_add(vd a, vd b) { return _mm512_add_pd(a, b); }
+static inline vd vd_sub(vd a, vd b) { return _mm512_sub_pd(a, b); }
+static inline vd vd_mul(vd a, vd b) { return _mm512_mul_pd(a, b); }
+static inline vd vd_set1(double a) { return _mm512_set1_pd(a); }
+static inline unsigned vd_gt0(vd a) { return (unsigned)_mm512_cmp_pd_mask(a, _mm512_setzero_pd(), _CMP_GT_OQ); }
+static inline unsigned vd_eq0(vd a) { return (unsigned)_mm512_cmp_pd_mask(a, _mm512_setzero_pd(), _CMP_EQ_OQ); }
+/* each lane rounded once to binary32 (round to nearest, as a C conversion) */
+static inline vf vf_from_vd(vd lo, vd hi)
+{
+    return _mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(lo)), _mm512_cvtpd_ps(hi), 1);
+}
+static inline unsigned vf_ge(vf a, vf b) { return (unsigned)_mm512_cmp_ps_mask(a, b, _CMP_GE_OQ); }
 
 #endif
