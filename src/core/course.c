@@ -7,6 +7,8 @@
 
 #include "render.h"
 #include "retro.h"
+#include "ctx.h"
+#include "frame.h"
 #include "kernels.h"
 #include "retro_internal.h"
 
@@ -41,14 +43,14 @@ void draw_line(ctx_t *c, int u, int v_from, int v_to, uint32_t color)
         c->out[retro_pixel(c->scr_width, c->scr_height, u, r)] = color;
 }
 
-/* No state outlives a call, so any sequence of sizes and maps in one process is safe. */
+/* No state outlives a call, so any sequence of sizes and maps in one process is safe. The
+ * kernel is called directly: the submission has no kernel table. */
 void render(const player_t *p, ctx_t *c)
 {
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    if (retro_frame_setup(&rc, RETRO_MODE_COURSE, p, c) == RETRO_OK)
-        retro_kernel_pthreads(&rc.frame, &rc);
-    retro_ctx_free(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    if (rc && retro_frame_setup(rc, RETRO_MODE_COURSE, p, c) == RETRO_OK)
+        retro_kernel_pthreads(&rc->frame, rc);
+    retro_ctx_free(rc);
 }
 
 int bonus_implemented(void)
