@@ -8,8 +8,13 @@ tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
 # The project's files, in dependency order; the two SIMD files are added by amalgamate-isa.sh.
-parts="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h
-  src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
+# The context's headers (src/core/ctx.h and the cache state it holds) come before
+# retro_internal.h, which includes them.
+head_parts="include/retro.h include/io/retro_scene.h src/voxel/frame.h src/effects/effects_bake.h src/voxel/hmax_cache.h
+  src/voxel/simd_map.h src/core/ctx.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h"
+body_parts="src/voxel/frame.c src/core/ctx.c src/voxel/hmax_cache.c src/effects/effects_bake.c src/voxel/course_accum.c
+  src/voxel/kernel_ybuffer.c src/voxel/simd_map.c"
+parts="$head_parts $body_parts
   src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c src/submission/dispatch.c src/threads/kernel_pthreads.c src/core/course.c"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
@@ -39,8 +44,7 @@ HDR
   echo
   grep -h '^#include <' $parts | sort -u
   part() { printf '\n/* ---- %s ---- */\n' "$1"; grep -v '^#include' "$1"; }
-  for f in include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/voxel/simd_common.h \
-           src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c; do
+  for f in $head_parts $body_parts; do
     part "$f"
   done
   # The SIMD strips, each compiled for its ISA and chosen at run time by the CPU's features.
