@@ -200,7 +200,7 @@ Test(render_opts, the_lod_rate_lives_in_the_options)
     size_t n = (size_t)W * H;
     uint32_t *a = malloc(n * 4), *b = malloc(n * 4);
     cr_assert(a && b);
-    player_t p = {5.5f, 50.5f, 120, 150, 0, 0, 0};
+    player_t p = {5.5f, 50.5f, 120, 400, 0, 0, 0}; /* above every cell: far samples show */
     ctx_t c = {W, H, S, 400, SKY, m.height, m.color, a};
     retro_ctx *rc = retro_ctx_new();
     cr_assert(rc);
