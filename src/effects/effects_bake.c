@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "effects_bake.h"
+#include "retro.h"
 #include "retro_scene.h"
 
 static void morph(const uint8_t *h0, const uint8_t *h1, int T, uint8_t *out, size_t n)
@@ -137,4 +138,30 @@ void retro_fog_table(const retro_effects *fx, uint16_t *fog, int D)
         f = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
         fog[d] = (uint16_t)(int)(f * 256.0f + 0.5f);
     }
+}
+
+static int in(float v, float lo, float hi)
+{
+    return v >= lo && v <= hi; /* false for NaN */
+}
+
+int retro_effects_valid(const retro_effects *fx)
+{
+    unsigned f = fx->flags;
+    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
+                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
+        return 0;
+    if (f & RETRO_FX_SHADE) {
+        float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
+        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
+            return 0;
+    }
+    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
+                                  in(fx->water_alpha_per_unit, 0, 1)))
+        return 0;
+    if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))
+        return 0;
+    if ((f & RETRO_FX_MORPH) && (!fx->morph_height || !in(fx->morph_t, 0, 1)))
+        return 0;
+    return 1;
 }

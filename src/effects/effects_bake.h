@@ -37,6 +37,10 @@ int retro_effects_bake(retro_fx_bake *b, const struct retro_effects *fx, const u
 /* The next bake rebuilds (a source map was edited in place). */
 void retro_effects_bake_stale(retro_fx_bake *b);
 void retro_effects_bake_free(retro_fx_bake *b);
+/* Whether fx's parameters are in the ranges docs/EFFECTS.md gives (the scene parser enforces
+ * the same); outside them a float-to-int conversion in the bake or the fog table could
+ * overflow. NaN is out of every range. */
+int retro_effects_valid(const struct retro_effects *fx);
 /* Fog weights F_d (0..256) for d = 1..D-1. */
 void retro_fog_table(const struct retro_effects *fx, uint16_t *fog, int D);
 

@@ -219,34 +219,6 @@ static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
     cap_rows(rc, f->D, row_course);
 }
 
-static int in(float v, float lo, float hi)
-{
-    return v >= lo && v <= hi; /* false for NaN */
-}
-
-/* The ranges docs/EFFECTS.md gives (the scene parser enforces the same): outside them a
- * float-to-int conversion in the bake or the fog table could overflow. */
-static int effects_valid(const retro_effects *fx)
-{
-    unsigned f = fx->flags;
-    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
-                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
-        return 0;
-    if (f & RETRO_FX_SHADE) {
-        float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
-        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
-            return 0;
-    }
-    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
-                                  in(fx->water_alpha_per_unit, 0, 1)))
-        return 0;
-    if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))
-        return 0;
-    if ((f & RETRO_FX_MORPH) && (!fx->morph_height || !in(fx->morph_t, 0, 1)))
-        return 0;
-    return 1;
-}
-
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c)
 {
     if (!rc || !p || !c || !c->height_map || !c->color_map || !c->out)
@@ -270,7 +242,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     /* Which effects a mode takes is decided by retro_kernel_check (effects are defined on
      * modes exact and lod); here only their parameters are checked. */
     unsigned flags = fx ? fx->flags & RETRO_FX_VOXEL : 0;
-    if (flags && !effects_valid(fx))
+    if (flags && !retro_effects_valid(fx))
         return RETRO_EINVAL;
     const uint8_t *hm = c->height_map;
     const uint32_t *cm = c->color_map;
@@ -334,32 +306,4 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->simd_skip = f->pyr && rc->simd_skip;
 #endif
     return RETRO_OK;
-}
-
-const char *const retro_voxel_mode_names[RETRO_MODE_COUNT] = {"exact", "course", "truth", "fixed", "lod"};
-
-const char *retro_mode_name(retro_mode mode)
-{
-    return (unsigned)mode < RETRO_MODE_COUNT ? retro_voxel_mode_names[mode] : "?";
-}
-
-int retro_mode_parse(const char *name, retro_mode *mode)
-{
-    for (int m = 0; m < RETRO_MODE_COUNT; m++)
-        if (!strcmp(name, retro_voxel_mode_names[m])) {
-            *mode = (retro_mode)m;
-            return 0;
-        }
-    return -1;
-}
-
-const char *retro_strerror(retro_err e)
-{
-    switch (e) {
-    case RETRO_OK: return "ok";
-    case RETRO_EINVAL: return "input outside the valid domain";
-    case RETRO_ENOMEM: return "out of memory";
-    case RETRO_EUNSUPPORTED: return "kernel does not support this mode or CPU";
-    }
-    return "unknown error";
 }
