@@ -28,7 +28,8 @@ extern "C" {
 // next case releases them, so a hundred cases never hold a hundred frames at once.
 static struct {
     const BenchCase *owner = nullptr;
-    retro_ctx rc;
+    retro_ctx *rc = nullptr;
+    retro_render_opts opts = RETRO_RENDER_OPTS_DEFAULT; // what every frame of the case asks for
     std::vector<uint32_t> out;
     retro_err first;             // the result of the case's first, untimed frame
 } live;
@@ -75,7 +76,7 @@ static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
         return std::nan("");
     std::memset(n, 0, sizeof *n);
     player_t q = *p;
-    if (retro_render(&live.rc, &k, c->mode, &q, frame))
+    if (retro_render(live.rc, &k, &live.opts, &q, frame))
         return std::nan("");
     return static_cast<double>(n->evaluated);
 }
@@ -91,19 +92,23 @@ static void run_case(benchmark::State &st, const BenchCase *c)
     ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color,
                    nullptr};
     if (live.owner != c) {
-        retro_ctx_free(&live.rc);
-        retro_ctx_init(&live.rc);
-        live.rc.threads = c->threads;
-        live.rc.fx = c->fx;
-        live.rc.no_skip = c->no_skip;
-        live.rc.simd_skip = simd_skip;
+        retro_ctx_free(live.rc);
+        live.rc = retro_ctx_new();
+        live.opts = retro_render_opts_default();
+        live.opts.mode = c->mode;
+        live.opts.fx = c->fx;
+        live.opts.threads = c->threads;
+        live.opts.no_skip = c->no_skip;
+        live.opts.simd_skip = simd_skip;
         live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
         live.owner = c;
         bind_for(c->threads);
         // Once per case, untimed: it validates the input and grows the context (and a
         // threaded kernel's pool), so that no timed frame allocates.
         frame.out = live.out.data();
-        live.first = c->direct ? RETRO_OK : retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+        live.first = !live.rc ? RETRO_ENOMEM
+                     : c->direct ? RETRO_OK
+                                 : retro_render(live.rc, c->kernel, &live.opts, &p, &frame);
     }
     frame.out = live.out.data();
     if (live.first) {
@@ -117,7 +122,7 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         }
     else
         for (auto _ : st) {
-            retro_render(&live.rc, c->kernel, c->mode, &p, &frame);
+            retro_render(live.rc, c->kernel, &live.opts, &p, &frame);
             benchmark::ClobberMemory();
         }
     using benchmark::Counter;
@@ -134,7 +139,7 @@ static void run_case(benchmark::State &st, const BenchCase *c)
     st.counters["Mpixel/s"] =
         Counter(c->W * static_cast<double>(c->H) / 1e6, Counter::kIsIterationInvariantRate);
     if (c->groups & GROUP_MESH)
-        mesh_counters(&st, c, &live.rc);
+        mesh_counters(&st, c, live.rc);
     else // nominal: the W x (D-1) samples of the reference; kernels that stop early take fewer
         st.counters["samples/s"] = Counter(c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 0),
                                            Counter::kIsIterationInvariantRate);
@@ -216,10 +221,10 @@ int main(int argc, char **argv)
     }
 
     context_publish(ctx);
-    retro_ctx_init(&live.rc);
     ProgressReporter progress(&plan);
     size_t ran = benchmark::RunSpecifiedBenchmarks(&progress);
-    retro_ctx_free(&live.rc);
+    retro_ctx_free(live.rc);
+    live.rc = nullptr;
     benchmark::Shutdown();
     int status = ran ? 0 : 1;
     if (progress.cases_done() > 0) { // none with --benchmark_list_tests

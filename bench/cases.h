@@ -28,11 +28,11 @@ enum : unsigned {
 struct BenchCase {
     const retro_kernel *kernel;
     int kernel_index;            // row of retro_kernels[], for stable ordering
-    int threads;                 // retro_ctx.threads; 1 for kernels without RETRO_KF_THREADED
+    int threads;                 // retro_render_opts.threads; 1 for kernels without RETRO_KF_THREADED
     const bench_scene *scene;
     retro_mode mode;
     int W, H, D;
-    bool no_skip = false;        // retro_ctx.no_skip: occlusion skipping off (--no-skip twins)
+    bool no_skip = false;        // retro_render_opts.no_skip: occlusion skipping off (--no-skip twins)
     unsigned groups;             // GROUP_* bits
     std::string name;            // mode/scene/kernel/threads/WxH/D: the benchmark's name
     // Extras (extras.cc), never matched as matrix cases: a course-style render() called
@@ -63,7 +63,7 @@ struct BenchPlan {
     int W = 640, H = 480, D = 800;                  // the matrix frame
     int cores = 1;
     bool no_skip_twins = false;                     // --no-skip: every mode exact case twice
-    bool simd_skip = false;                         // --simd-skip: retro_ctx.simd_skip in every case
+    bool simd_skip = false;                         // --simd-skip: retro_render_opts.simd_skip in every case
 
     // The case with exactly these parameters, or nullptr.
     const BenchCase *find(const retro_kernel *k, int threads, const bench_scene *s,

@@ -23,7 +23,7 @@ void options_usage()
         "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n"
         "  --no-skip       time every mode exact case also with occlusion skipping off\n"
         "                  (docs/SKIPPING.md), as a twin named .../noskip\n"
-        "  --simd-skip     let the SIMD strips skip too (retro_ctx.simd_skip; off by default)\n\n"
+        "  --simd-skip     let the SIMD strips skip too (retro_render_opts.simd_skip; off by default)\n\n"
         "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
         "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"
         "Every --benchmark_* flag of google-benchmark works; given flags override the\n"

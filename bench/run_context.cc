@@ -58,10 +58,9 @@ void context_gather(RunContext *rc)
     rc->cores = pin_core_count();
     rc->pus = pin_pu_count();
     rc->isa = retro_cpu_level_name(retro_cpu_features());
-    retro_ctx scratch;
-    retro_ctx_init(&scratch);
-    rc->kernel_binding = retro_ctx_binding(&scratch);
-    retro_ctx_free(&scratch);
+    retro_ctx *scratch = retro_ctx_new();
+    rc->kernel_binding = scratch ? retro_ctx_binding(scratch) : "unknown (out of memory)";
+    retro_ctx_free(scratch);
     rc->cc = RETRO_BUILD_CC;
     rc->cflags = RETRO_BUILD_CFLAGS;
 #if defined(__clang__)

@@ -1,10 +1,16 @@
 /* retro: one interface, many voxel-space kernels.
  *
- * A frame is defined by ../shared/SEMANTICS.md in two modes. retro_frame_setup() validates the
- * input and computes, once per frame, every constant the formulas need (angle, column rays,
- * per-distance scale, course-mode line endpoints), so kernels differ only in traversal and
- * machinery, never in arithmetic. Every kernel is one row of retro_kernels[]; the CLI, the
- * equivalence checker, the tests and the benchmark all walk that one table.
+ * A frame is defined by ../shared/SEMANTICS.md. retro_render() validates the input and
+ * computes, once per frame, every constant the formulas need (angle, column rays, per-distance
+ * scale, course-mode line endpoints), so kernels differ only in traversal and machinery, never
+ * in arithmetic. Every kernel is one row of retro_kernels[]; the CLI, the equivalence checker,
+ * the tests and the benchmark all walk that one table.
+ *
+ *     retro_ctx *rc = retro_ctx_new();
+ *     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;    (mode exact, no effects)
+ *     const retro_kernel *k = retro_family_best(&retro_family_voxel, o.mode, o.fx);
+ *     retro_err e = retro_render(rc, k, &o, &player, &course_ctx);  (each frame)
+ *     retro_ctx_free(rc);
  */
 #ifndef RETRO_H
 #define RETRO_H
@@ -48,123 +54,44 @@ typedef enum {
 #define RETRO_FX_PROJ 16 /* fractional bits of mode fixed's projection */
 #define RETRO_LOD_DEFAULT 0.02f
 
-/* Everything a kernel may read for one frame. Built by retro_frame_setup(). */
-typedef struct retro_frame {
-    retro_mode mode;
-    int W, H, S, D;
-    uint32_t sky;
-    const uint8_t *height_map;
-    const uint32_t *color_map;
-    uint32_t *out;
-    int64_t height;    /* camera height, widened so h - height never overflows */
-    int hmax;          /* maximum of the height map, for exact early exits */
-    /* mode exact */
-    float cs, sn;      /* view direction, exact at multiples of 90 degrees */
-    float x0, y0;      /* position reduced modulo S */
-    float half_w;      /* 0.5f * W */
-    float half_h;      /* 0.5f * H */
-    const float *rx;   /* [W] column ray x: cs + t_u * sn */
-    const float *ry;   /* [W] column ray y: t_u * cs - sn */
-    const float *kd;   /* [D] projection scale (0.5f*W)/d, entry 0 unused */
-    /* mode course */
-    float cw2;         /* (float)(W/2) */
-    int ch2;           /* H/2 */
-    const float *lx, *ly; /* [D] left endpoint of line d */
-    const float *sx, *sy; /* [D] per-column step of line d */
-    /* mode truth: exact's quantities in binary64 */
-    double cs_d, sn_d, x0_d, y0_d;
-    const double *rxd, *ryd; /* [W] */
-    const double *kdd;       /* [D] (0.5*W)/d */
-    /* mode fixed: positions with RETRO_FX_POS fractional bits, projection with RETRO_FX_PROJ */
-    int64_t x0_fx, y0_fx, half_h_fx;
-    const int64_t *rx_fx, *ry_fx; /* [W] */
-    const int64_t *kd_fx;         /* [D] */
-    /* the context's packed colour|height map (src/simd_map.c) when a threaded kernel offers
-     * it to its strips, else NULL: strips then read the maps themselves */
-    const uint32_t *packed;
-    /* per-sample effects in force (RETRO_FX_FOG, RETRO_FX_BILINEAR of retro_scene.h) */
-    unsigned fx;
-    const uint16_t *fog;  /* [D] fog weight 0..256 at distance d */
-    /* mode lod: the sample distances, increasing from 1 */
-    const int *dist;
-    int ndist;
-    /* every mode: vcap[n] = max over n' >= n of the projected row of a sample of height hmax
-     * at the n'-th distance (distance n, or dist[n] in mode lod); no sample from there on
-     * can rise above it. The entry past the last distance is 0. */
-    const int *vcap;
-    /* modes exact and lod: the map's maximum-height pyramid when occlusion skipping is on
-     * (src/voxel/hmax_pyramid.h, docs/SKIPPING.md), else NULL */
-    const struct retro_pyramid *pyr;
-    /* with pyr: the SIMD strips skip too, per group of columns (retro_ctx.simd_skip) */
-    int simd_skip;
-    /* the strip the threaded kernels run: the fastest of the strip table (src/voxel/strips.h)
-     * for this frame's mode and effects at the CPU's ISA level, chosen once by setup */
-    void (*strip)(const struct retro_frame *f, float *qx, float *qy, int u0, int u1);
-} retro_frame;
+/* The voxel family's frame constants: everything its kernels read for one frame, built by
+ * the library (src/voxel/frame.h defines it). Opaque here: a caller never builds or reads one. */
+typedef struct retro_frame retro_frame;
 
-/* Reusable memory for one rendering thread. Grown by retro_frame_setup(), never per frame
- * once the sizes are reached, freed by retro_ctx_free(). */
-typedef struct retro_ctx {
-    retro_frame frame;
-    float *rx, *ry;     /* capacity cap_w */
-    float *kd;          /* capacity cap_d */
-    float *lx, *ly, *sx, *sy;
-    int *vcap;          /* capacity cap_d + 1 */
-    int *ybuf;          /* per-column y-buffer, capacity cap_w */
-    float *qx, *qy;     /* course-mode accumulators per distance, capacity cap_d */
-    double *rxd, *ryd, *kdd;       /* mode truth */
-    int64_t *rx_fx, *ry_fx, *kd_fx; /* mode fixed */
-    int *dist;                     /* mode lod, capacity cap_d */
-    float lod;          /* mode lod's step growth (0: the default 0.02) */
-    const struct retro_effects *fx; /* effects to simulate (include/retro_scene.h), or NULL */
-    uint8_t *fx_height;  /* baked maps (morph, shade, water), capacity fx_cap cells */
-    uint32_t *fx_color;
-    size_t fx_cap;
-    void *fx_key;        /* the inputs the baked maps were made from */
-    uint16_t *fog;       /* fog weight per distance, capacity cap_d */
-    int cap_w, cap_d;
-    const uint8_t *hmax_map; /* map whose maximum is cached in hmax_value */
-    int hmax_size;
-    int hmax_value;
-    int threads;        /* requested threads for parallel kernels (0 = default) */
-    float *tscratch;    /* pthreads kernel: per-thread course accumulators */
-    size_t tscratch_cap;
-    void *pool;         /* owned by parallel kernels */
-    struct retro_pt_pool *pt_pool; /* the pthreads kernel's workers, kept until retro_ctx_free */
-    /* SIMD kernels (src/simd_map.c): colour | height packed into one uint32 per cell, so one
-     * load or gather fetches both. Rebuilt only when the map pointers or S change; like the
-     * height maximum, call retro_ctx_map_changed() after editing either map in place. */
-    uint32_t *simd_cells;               /* capacity simd_cells_cap cells */
-    size_t simd_cells_cap;
-    const uint8_t *simd_height_map;     /* the maps simd_cells was built from */
-    const uint32_t *simd_color_map;
-    int simd_map_size;
-    int simd_cells_ok;                  /* every colour had a zero low byte: packing is lossless */
-    /* Occlusion skipping (docs/SKIPPING.md): the height map's maximum pyramid, cached per map
-     * pointer like the maximum; no_skip = 1 turns skipping off (the same bytes, every sample
-     * evaluated), for measuring what it saves. */
-    struct retro_pyramid *pyr;
-    int no_skip;
-    /* simd_skip = 1: the SIMD strips (and the threaded kernels running them) skip as well, per
-     * group of adjacent columns (docs/SKIPPING.md). Exact, but not yet faster than their plain
-     * loop where measured, so off by default; the scalar strips always skip unless no_skip. */
-    int simd_skip;
-    /* The mesh family's state (src/mesh/family.c): the module's context, the frame's inputs,
-     * the last frame's counts; NULL until a mesh frame is set up. */
-    struct retro_mesh_state *mesh;
-    /* Set by a kernel that fails after setup (out of memory); retro_render returns it. */
-    retro_err kernel_err;
-} retro_ctx;
+/* A rendering context: reusable scratch memory and per-map caches for one rendering thread,
+ * grown on the first frames of a size and then never per frame. Opaque (src/core/ctx.h): make
+ * one with retro_ctx_new(), say what to render in a retro_render_opts, free it with
+ * retro_ctx_free(). One context per thread that renders. */
+typedef struct retro_ctx retro_ctx;
 
-void retro_ctx_init(retro_ctx *rc);
+/* NULL when out of memory. */
+retro_ctx *retro_ctx_new(void);
+/* Frees rc and everything it holds; NULL is allowed. */
 void retro_ctx_free(retro_ctx *rc);
 /* The map's maximum and packed copies are cached per map pointer: call this after editing a
  * map in place, or after freeing a map and loading another with the same context (its
  * buffers may reuse the old addresses). */
 void retro_ctx_map_changed(retro_ctx *rc);
 
-/* Validates (player, ctx) for mode and fills rc->frame. Returns RETRO_OK or an error. */
-retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c);
+/* What to render, said once per call of retro_render(). Start from RETRO_RENDER_OPTS_DEFAULT
+ * (or retro_render_opts_default()) and set what differs. The library reads the options, and
+ * the effects fx points to, only during the call: fx may change or go away between calls
+ * (baked maps are cached by the effects' values, not by the pointer). */
+typedef struct retro_render_opts {
+    int mode;        /* a mode of the kernel's family: retro_mode (voxel) or retro_mesh_mode */
+    const struct retro_effects *fx; /* effects to simulate (include/io/retro_scene.h) or NULL;
+                                     * with RETRO_FX_LOD, voxel mode exact renders as mode lod */
+    float lod;       /* mode lod's step growth, given here only: 0 for RETRO_LOD_DEFAULT, else
+                      * 0 < lod <= 100 (docs/ACCURACY.md) */
+    int threads;     /* threads of threaded kernels; 0: OMP_NUM_THREADS or the core count */
+    int no_skip;     /* 1: occlusion skipping off (the same bytes, every sample evaluated) */
+    int simd_skip;   /* 1: the SIMD strips skip too, per group of columns (docs/SKIPPING.md):
+                      * exact, but not faster everywhere, so off by default */
+} retro_render_opts;
+
+/* Mode exact, no effects, the default lod rate and thread count, scalar skipping on. */
+#define RETRO_RENDER_OPTS_DEFAULT {RETRO_MODE_EXACT, NULL, 0.0f, 0, 0, 0}
+retro_render_opts retro_render_opts_default(void);
 
 /* A kernel renders one frame from its family's frame constants (for voxel kernels a
  * const retro_frame *), using rc only for scratch. Each family sets its frames up its own way
@@ -198,6 +125,8 @@ typedef struct retro_family {
     int mode_count;                  /* modes are 0 .. mode_count-1 */
     const char *const *mode_names;   /* [mode_count], for the CLI and refusals */
     unsigned fx;                     /* the effects (RETRO_FX_*) defined for this family */
+    unsigned fx_modes;               /* RETRO_MODE_BIT()s of the modes effects are defined on;
+                                      * 0: every mode */
     /* The mode a frame renders in: mode itself, or what the effects turn it into (voxel: lod
      * effect on mode exact gives mode lod). Decided here once, for checks and setup alike. */
     int (*effective_mode)(int mode, const struct retro_effects *fx);
@@ -243,16 +172,18 @@ int retro_family_mode_parse(const retro_family *fam, const char *name, int *mode
 const char *retro_fx_name(unsigned bit);
 /* The fastest voxel kernel this CPU runs for mode (the last capable row of the table). */
 const retro_kernel *retro_kernel_best(retro_mode mode);
-/* The same among kernels that render the effects of fx (NULL: none). */
 /* The fastest kernel of family fam this CPU runs for mode and the effects fx (NULL: none): the
  * last capable row of the table, which lists each family slowest first. */
 const retro_kernel *retro_family_best(const retro_family *fam, int mode, const struct retro_effects *fx);
+/* retro_family_best() of the voxel family. */
 const retro_kernel *retro_kernel_best_fx(retro_mode mode, const struct retro_effects *fx);
 int retro_kernel_runs_here(const retro_kernel *k);
 int retro_kernel_has_mode(const retro_kernel *k, retro_mode mode);
-/* Whether k can render mode with the effects fx on this CPU: RETRO_OK, or RETRO_EUNSUPPORTED
- * with why (one line, "kernel simd-avx2 does not render bilinear") in why[n] if why is not
- * NULL. The one place the mode and the capability are decided. */
+/* Whether k can render mode with the effects fx on this CPU: RETRO_OK; RETRO_EINVAL for a
+ * mode its family lacks or effects the mode does not define; else RETRO_EUNSUPPORTED. With
+ * why (n bytes) it says which mode, effect or ISA level is missing, in one line ("kernel
+ * simd-avx2 does not render bilinear"). The one place the mode and the capability are
+ * decided: retro_render_check() and retro_render() call it. */
 retro_err retro_kernel_check(const retro_kernel *k, int mode, const struct retro_effects *fx, char *why,
                              size_t n);
 
@@ -268,15 +199,22 @@ int retro_cpu_level(unsigned features);
 extern const char *const retro_isa_names[];
 extern const int retro_isa_count;
 
-/* Threads a threaded kernel uses with rc: rc->threads if set, else OMP_NUM_THREADS, else the
- * number of cores. */
+/* Threads a threaded kernel uses with rc: the last render's retro_render_opts.threads if set,
+ * else OMP_NUM_THREADS, else the number of cores. */
 int retro_ctx_threads(const retro_ctx *rc);
 /* One line saying how threads are bound to cores here (hwloc), for reports. */
 const char *retro_ctx_binding(retro_ctx *rc);
 
-/* Validates, sets up and renders one frame with kernel k in mode (a mode of k's family),
- * with the effects rc->fx. RETRO_EUNSUPPORTED when retro_kernel_check() refuses. */
-retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c);
+/* The mode a frame of kernel k with the options o renders in: o->mode, or what the effects
+ * turn it into (voxel: the lod effect on mode exact gives mode lod). */
+int retro_render_mode(const retro_kernel *k, const retro_render_opts *o);
+/* Whether retro_render(rc, k, o, ...) would render rather than refuse: retro_kernel_check()
+ * of k, o->mode and o->fx, and o's own values (lod, threads); the reason in why as there. */
+retro_err retro_render_check(const retro_kernel *k, const retro_render_opts *o, char *why, size_t n);
+/* Validates, sets up and renders one frame with kernel k as o says (NULL: the defaults).
+ * RETRO_EUNSUPPORTED or RETRO_EINVAL when retro_render_check() refuses (print its why). */
+retro_err retro_render(retro_ctx *rc, const retro_kernel *k, const retro_render_opts *o, const player_t *p,
+                       ctx_t *c);
 
 const char *retro_mode_name(retro_mode mode);
 /* The voxel family's modes: returns 0 and sets *mode for a mode's name; -1 otherwise. */

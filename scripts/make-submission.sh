@@ -8,13 +8,15 @@ tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT
 mkdir -p "$(dirname "$out")"
 # The project's files, in dependency order; the SIMD files (with the templates they include) are
-# added by isa_part below.
-# The strips' dispatch is the library's own: the strip table (src/voxel/strips.h, strips.c) and
-# the ISA levels (src/core/isa.h, cpu.c, which also reads RETRO_ISA), so it is kept nowhere else.
-head="include/retro.h include/io/retro_scene.h src/voxel/retro_internal.h src/voxel/kernels.h src/core/isa.h
+# added by isa_part below. The context's headers (src/core/ctx.h and the cache state it holds)
+# come before retro_internal.h, which includes them. The strips' dispatch is the library's own:
+# the strip table (src/voxel/strips.h, strips.c) and the ISA levels (src/core/isa.h, cpu.c,
+# which also reads RETRO_ISA), so it is kept nowhere else.
+head="include/retro.h include/io/retro_scene.h src/voxel/frame.h src/effects/effects_bake.h src/voxel/hmax_cache.h
+  src/voxel/simd_map.h src/core/ctx.h src/voxel/retro_internal.h src/voxel/kernels.h src/core/isa.h
   src/core/env.h src/core/errf.h src/voxel/strips.h src/voxel/simd_common.h src/threads/pt_pool.h
-  src/voxel/frame.c src/effects/effects_bake.c src/voxel/course_accum.c src/voxel/kernel_ybuffer.c src/voxel/simd_map.c
-  src/core/cpu.c src/core/errf.c src/core/env.c src/voxel/strips.c"
+  src/voxel/frame.c src/core/ctx.c src/voxel/hmax_cache.c src/effects/effects_bake.c src/voxel/course_accum.c
+  src/voxel/kernel_ybuffer.c src/voxel/simd_map.c src/core/cpu.c src/core/errf.c src/core/env.c src/voxel/strips.c"
 tail="src/threads/pt_pool.c src/threads/kernel_pthreads.c src/core/course.c"
 parts="$head $(ls src/voxel/*_tpl.h) src/arch/x86/kernel_simd_sse2.c src/arch/x86/kernel_simd_avx2.c src/arch/x86/kernel_simd_avx512.c $tail"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)

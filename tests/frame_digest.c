@@ -1,7 +1,8 @@
 /* frame_digest: one line per rendered frame (case, kernel, ISA level, threads, mode, effects,
  * status, FNV-1a 64 of the bytes) over the verify cases and seeded random poses, so two builds
  * of the library can be compared byte for byte (scripts/compare-frames.sh diffs the outputs).
- * Built by that script against each tree's own headers and library.
+ * Built by that script against each tree's own headers and library: against a tree from
+ * before retro_render_opts (no RETRO_RENDER_OPTS_DEFAULT) it uses the older API.
  * usage: frame_digest MAPS_DIR SHARED_DIR [POSES [naive]]: with "naive", naive alone. */
 #include <math.h>
 #include <stdio.h>
@@ -22,15 +23,35 @@ static uint64_t fnv(const uint32_t *p, size_t n)
     return h;
 }
 
-/* Renders with the kernel named k at the given threads; returns the library's status. */
-static int render_with(const char *k, int threads, int mode, const retro_effects *fx, const player_t *p, ctx_t *c)
+/* Renders with the kernel named k at the given threads, lod the rate of mode lod and of the
+ * lod effect; returns the library's status. */
+static int render_with(const char *k, int threads, int mode, const retro_effects *fx, float lod, const player_t *p,
+                       ctx_t *c)
 {
+#ifdef RETRO_RENDER_OPTS_DEFAULT
+    retro_ctx *rc = retro_ctx_new();
+    if (!rc)
+        return RETRO_ENOMEM;
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.fx = fx;
+    o.lod = lod;
+    o.threads = threads;
+    int e = retro_render(rc, retro_kernel_find(k), &o, p, c);
+    retro_ctx_free(rc);
+#else /* the public struct and the rate in the effects */
+    retro_effects with_rate;
+    if (fx) {
+        with_rate = *fx;
+        with_rate.lod = lod;
+    }
     retro_ctx rc;
     retro_ctx_init(&rc);
-    rc.fx = fx;
+    rc.fx = fx ? &with_rate : NULL;
     rc.threads = threads;
     int e = retro_render(&rc, retro_kernel_find(k), (retro_mode)mode, p, c);
     retro_ctx_free(&rc);
+#endif
     return e;
 }
 
@@ -40,7 +61,8 @@ static const char *const kernels[] = {"naive", "ybuffer", "simd-sse2", "simd-avx
  * each build's own checker proves its variants equal its naive, so equal naives make every
  * variant of both builds equal. */
 static int all = 1;
-static void all_variants(const char *name, int mode, const retro_effects *fx, const player_t *p, ctx_t *c)
+static void all_variants(const char *name, int mode, const retro_effects *fx, float lod, const player_t *p,
+                         ctx_t *c)
 {
     size_t n = (size_t)c->scr_width * (size_t)c->scr_height;
     for (size_t k = 0; k < (all ? sizeof kernels / sizeof kernels[0] : 1); k++) {
@@ -50,7 +72,7 @@ static void all_variants(const char *name, int mode, const retro_effects *fx, co
                 retro_cpu_limit(retro_isa_names[isa]);
                 for (size_t i = 0; i < n; i++)
                     c->out[i] = 0x01020300u ^ (uint32_t)i;
-                int e = render_with(kernels[k], t, mode, fx, p, c);
+                int e = render_with(kernels[k], t, mode, fx, lod, p, c);
                 printf("%s %s %s %d %d %x %d %016llx\n", name, kernels[k], retro_isa_names[isa], t, mode,
                        fx ? fx->flags : 0, e, e ? 0ull : (unsigned long long)fnv(c->out, n));
             }
@@ -119,7 +141,7 @@ int main(int argc, char **argv)
         }
         ctx_t c = {vc->W, vc->H, m->size, vc->D, 0x66a3ff00u, m->height, m->color, out};
         for (int mode = 0; mode < RETRO_MODE_COUNT; mode++)
-            all_variants(vc->name, mode, NULL, &p, &c);
+            all_variants(vc->name, mode, NULL, 0.0f, &p, &c);
     }
     const char *pose_maps[] = {"alpine", "islands", "test/alpine-200", "course/valley"};
     for (int i = 0; i < poses; i++) {
@@ -137,18 +159,18 @@ int main(int argc, char **argv)
         char name[64];
         snprintf(name, sizeof name, "pose%d", i);
         for (int mode = 0; mode < RETRO_MODE_COUNT; mode++)
-            all_variants(name, mode, NULL, &p, &c);
+            all_variants(name, mode, NULL, 0.0f, &p, &c);
         retro_effects fx;
         retro_effects_defaults(&fx);
         fx.flags = (unsigned)rnd(1, RETRO_FX_VOXEL);
         fx.fog_exp = rnd(0, 1);
         fx.pitch = rnd(-100, 100);
-        fx.lod = 0.01f * (float)rnd(1, 8);
+        float lod = 0.01f * (float)rnd(1, 8);
         fx.morph_height = (size_t)S * (size_t)S <= sizeof inverted ? inverted : NULL;
         fx.morph_t = 0.01f * (float)rnd(0, 100);
         if (!fx.morph_height)
             fx.flags &= ~(unsigned)RETRO_FX_MORPH;
-        all_variants(name, RETRO_MODE_EXACT, &fx, &p, &c);
+        all_variants(name, RETRO_MODE_EXACT, &fx, lod, &p, &c);
     }
     for (int i = 0; i < verify_fx_case_count; i++) {
         const verify_fx_case *vc = &verify_fx_cases[i];
@@ -169,7 +191,7 @@ int main(int argc, char **argv)
         fx.morph_t = 0.37f;
         player_t p = {view.x, view.y, vc->angle, view.height, 0, 0, 0};
         ctx_t c = {320, 240, S, 800, 0x66a3ff00u, m->height, m->color, out};
-        all_variants(vc->name, RETRO_MODE_EXACT, &fx, &p, &c);
+        all_variants(vc->name, RETRO_MODE_EXACT, &fx, RETRO_LOD_DEFAULT, &p, &c);
     }
     for (int i = 0; i < nmaps; i++)
         if (maps[i].size)

@@ -22,7 +22,7 @@ rig *rig_new(void)
     cr_assert(g);
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
-            retro_ctx_init(&g->rc[k][t]);
+            cr_assert(g->rc[k][t] = retro_ctx_new());
     cr_assert_eq(retro_check_init(&g->chk, &retro_family_voxel, NULL, MAX_THREADS), 0);
     return g;
 }
@@ -31,7 +31,7 @@ void rig_map_changed(rig *g)
 {
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
-            retro_ctx_map_changed(&g->rc[k][t]);
+            retro_ctx_map_changed(g->rc[k][t]);
     retro_check_map_changed(&g->chk);
 }
 
@@ -40,7 +40,7 @@ void rig_done(rig *g, const char *test)
 {
     for (int k = 0; k < MAX_KERNELS; k++)
         for (int t = 0; t <= MAX_THREADS; t++)
-            retro_ctx_free(&g->rc[k][t]);
+            retro_ctx_free(g->rc[k][t]);
     retro_check_free(&g->chk);
     free(g->ref);
     free(g->out);
@@ -91,10 +91,12 @@ long first_diff(const uint32_t *a, const uint32_t *b, size_t n)
 retro_err rig_render(rig *g, size_t k, int threads, retro_mode mode, const player_t *p,
                             ctx_t *c)
 {
-    retro_ctx *rc = &g->rc[k][threads];
-    rc->threads = threads;
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.lod = g->lod;
+    o.threads = threads;
     g->renders++;
-    return retro_render(rc, &retro_kernels[k], mode, p, c);
+    return retro_render(g->rc[k][threads], &retro_kernels[k], &o, p, c);
 }
 
 /* Reports a variant that failed or differs from g->ref. */

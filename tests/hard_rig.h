@@ -21,7 +21,8 @@
  * frames. The contexts cache per map pointer, so maps stay allocated until the test ends and
  * in-place edits are announced through rig_map_changed(). */
 typedef struct {
-    retro_ctx rc[MAX_KERNELS][MAX_THREADS + 1]; /* naive's is rc[0][0] */
+    retro_ctx *rc[MAX_KERNELS][MAX_THREADS + 1]; /* naive's is rc[0][0] */
+    float lod;         /* retro_render_opts.lod of every render; set chk.lod alike */
     retro_check chk;   /* every other variant (src/check/) */
     uint32_t *ref, *out;
     size_t cap;

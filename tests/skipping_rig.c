@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ctx.h"
 #include "skipping_rig.h"
 
 /* The kernels whose strips skip (the SIMD strips, and the threaded kernels running them). */
@@ -20,7 +21,8 @@ static void report(void *user, const retro_check_variant *v, const retro_check_r
 {
     report_ctx *rep = user;
     rep->ran += r->ran;
-    rep->with_pyramid += r->ran && v->ctx.frame.pyr && v->ctx.frame.simd_skip;
+    const retro_frame *f = retro_ctx_frame(v->ctx);
+    rep->with_pyramid += r->ran && f->pyr && f->simd_skip;
     if (r->ran && (r->err || r->differ) && !rep->first[0])
         retro_check_describe(rep->chk, v, r, rep->first, sizeof rep->first);
 }
@@ -30,14 +32,11 @@ trio *rig_open(void)
     trio *g = calloc(1, sizeof *g);
     cr_assert(g);
     for (int i = 0; i < NCTX; i++)
-        retro_ctx_init(&g->rc[i]);
-    g->rc[NOSKIP].no_skip = 1;
-    for (int k = 0; k < NSIMD; k++)
-    {
+        cr_assert(g->rc[i] = retro_ctx_new());
+    for (int k = 0; k < NSIMD; k++) {
         cr_assert_eq(retro_check_init(&g->chk[k], &retro_family_voxel, skipping_kernels[k], 2), 0, "%s",
                      skipping_kernels[k]);
-        for (int i = 0; i < g->chk[k].n; i++) /* the group skipping is opt-in (retro_ctx.simd_skip) */
-            g->chk[k].v[i].ctx.simd_skip = 1;
+        g->chk[k].simd_skip = 1; /* the group skipping is opt-in (retro_render_opts.simd_skip) */
     }
     return g;
 }
@@ -45,7 +44,7 @@ trio *rig_open(void)
 void rig_close(trio *g)
 {
     for (int i = 0; i < NCTX; i++)
-        retro_ctx_free(&g->rc[i]);
+        retro_ctx_free(g->rc[i]);
     for (int k = 0; k < NSIMD; k++)
         retro_check_free(&g->chk[k]);
     free(g->ref);
@@ -57,7 +56,7 @@ void rig_close(trio *g)
 void new_map(trio *g)
 {
     for (int i = 0; i < NCTX; i++)
-        retro_ctx_map_changed(&g->rc[i]);
+        retro_ctx_map_changed(g->rc[i]);
     for (int k = 0; k < NSIMD; k++)
         retro_check_map_changed(&g->chk[k]);
 }
@@ -91,12 +90,14 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
     }
     ctx_t c = {W, H, m->size, D, 0x66a3ff00u, m->height, m->color, g->ref};
     const retro_kernel *naive = retro_kernel_find("naive"), *yb = retro_kernel_find("ybuffer");
-    g->rc[NAIVE].fx = g->rc[SKIP].fx = g->rc[NOSKIP].fx = fx;
-    cr_assert_eq(retro_render(&g->rc[NAIVE], naive, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "%s", what);
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.fx = fx;
+    cr_assert_eq(retro_render(g->rc[NAIVE], naive, &o, &p, &c), RETRO_OK, "%s", what);
     for (int k = SKIP; k <= NOSKIP; k++) {
         c.out = g->out;
         memset(g->out, 0xab, n * sizeof *g->out);
-        cr_assert_eq(retro_render(&g->rc[k], yb, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "%s", what);
+        o.no_skip = k == NOSKIP;
+        cr_assert_eq(retro_render(g->rc[k], yb, &o, &p, &c), RETRO_OK, "%s", what);
         if (memcmp(g->ref, g->out, n * sizeof *g->out)) {
             size_t i = 0;
             while (g->ref[i] == g->out[i])
@@ -108,9 +109,10 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
         }
     }
     /* The skipping context took the skipping path whenever the map has pyramid levels. */
-    cr_assert_eq(g->rc[SKIP].frame.pyr != NULL, m->size > 4, "%s: pyramid %s for S %d", what,
-                 g->rc[SKIP].frame.pyr ? "present" : "absent", m->size);
-    cr_assert_null(g->rc[NOSKIP].frame.pyr, "%s: no_skip still had a pyramid", what);
+    const struct retro_pyramid *skip_pyr = retro_ctx_frame(g->rc[SKIP])->pyr;
+    cr_assert_eq(skip_pyr != NULL, m->size > 4, "%s: pyramid %s for S %d", what, skip_pyr ? "present" : "absent",
+                 m->size);
+    cr_assert_null(retro_ctx_frame(g->rc[NOSKIP])->pyr, "%s: no_skip still had a pyramid", what);
     /* The kernels whose strips skip, at every level and thread count, against naive. */
     for (int k = 0; k < NSIMD; k++) {
         report_ctx rep = {&g->chk[k], what, 0, 0, ""};
@@ -125,7 +127,7 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
         g->variants += rep.ran;
     }
     g->frames++;
-    g->skipped_frames += g->rc[SKIP].frame.pyr != NULL;
+    g->skipped_frames += skip_pyr != NULL;
 }
 
 /* Each case in mode exact, then in mode lod (the lod effect on the same effects) at a rate

@@ -13,7 +13,7 @@ enum { NAIVE, SKIP, NOSKIP, NCTX };
 enum { NSIMD = 5 }; /* skipping_kernels[] */
 
 typedef struct {
-    retro_ctx rc[NCTX];
+    retro_ctx *rc[NCTX];
     retro_check chk[NSIMD];
     uint32_t *ref, *out;
     size_t cap;

@@ -15,11 +15,13 @@ static void render_mode(const retro_map *m, retro_mode mode, float lod, const pl
                         uint32_t *out)
 {
     ctx_t c = {W, H, m->size, D, 0x000000ffu, m->height, m->color, out};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    rc.lod = lod;
-    cr_assert_eq(retro_render(&rc, retro_kernel_find("naive"), mode, p, &c), RETRO_OK);
-    retro_ctx_free(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.lod = lod;
+    cr_assert_eq(retro_render(rc, retro_kernel_find("naive"), &o, p, &c), RETRO_OK);
+    retro_ctx_free(rc);
 }
 
 static double differ(const uint32_t *a, const uint32_t *b)

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "ctx.h"
 #include "ref_exact.h"
 #include "retro_scene.h"
 #include "test_util.h"
@@ -146,15 +147,25 @@ Test(kernels, identical_to_naive_on_random_poses)
     retro_map_free(&maps[1]);
 }
 
+/* Frame setup alone, as retro_render does it before the kernel runs (frame.h). */
+static retro_err setup(retro_ctx *rc, int mode, const retro_effects *fx, const player_t *p, const ctx_t *c)
+{
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.fx = fx;
+    const retro_frame *f;
+    return retro_frame_prepare(rc, &o, p, c, &f);
+}
+
 Test(frame, invalid_input_is_an_error)
 {
     uint8_t h[4] = {0};
     uint32_t col[4] = {0}, out[4];
     player_t p = {1, 1, 0, 10, 0, 0, 0};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
     ctx_t ok = {2, 2, 2, 10, 0, h, col, out};
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &ok), RETRO_OK);
+    cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &p, &ok), RETRO_OK);
     ctx_t bad[] = {
         {0, 2, 2, 10, 0, h, col, out},  {2, -1, 2, 10, 0, h, col, out},
         {2, 2, 0, 10, 0, h, col, out},  {2, 2, 2, RETRO_MAX_DISTANCE + 1, 0, h, col, out},
@@ -162,15 +173,15 @@ Test(frame, invalid_input_is_an_error)
         {RETRO_MAX_SCREEN + 1, 1, 2, 10, 0, h, col, out},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
-        cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &bad[i]), RETRO_EINVAL, "case %zu", i);
+        cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &p, &bad[i]), RETRO_EINVAL, "case %zu", i);
     player_t nan_p = {NAN, 1, 0, 10, 0, 0, 0}, inf_p = {1, INFINITY, 0, 10, 0, 0, 0};
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &nan_p, &ok), RETRO_EINVAL);
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &inf_p, &ok), RETRO_EINVAL);
+    cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &nan_p, &ok), RETRO_EINVAL);
+    cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &inf_p, &ok), RETRO_EINVAL);
     ctx_t s1 = {2, 2, 1, 10, 0, h, col, out};
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &s1), RETRO_OK);
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_COURSE, &p, &s1), RETRO_EINVAL, "course needs S >= 2");
-    cr_assert_eq(retro_frame_setup(&rc, (retro_mode)7, &p, &ok), RETRO_EINVAL);
-    retro_ctx_free(&rc);
+    cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &p, &s1), RETRO_OK);
+    cr_assert_eq(setup(rc, RETRO_MODE_COURSE, NULL, &p, &s1), RETRO_EINVAL, "course needs S >= 2");
+    cr_assert_eq(setup(rc, 7, NULL, &p, &ok), RETRO_EINVAL);
+    retro_ctx_free(rc);
 }
 
 /* Quarter turns only swap and negate: angle 90 must give exactly (cs, sn) = (0, 1). */
@@ -181,15 +192,16 @@ Test(frame, quarter_turns_are_exact)
     ctx_t c = {2, 2, 2, 10, 0, h, col, out};
     static const int angles[] = {0, 90, 180, 270, 360, -90, 450};
     static const float want[][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}, {0, -1}, {0, 1}};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
     for (int i = 0; i < 7; i++) {
         player_t p = {1, 1, angles[i], 10, 0, 0, 0};
-        cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
-        cr_assert(rc.frame.cs == want[i][0] && rc.frame.sn == want[i][1], "angle %d", angles[i]);
-        cr_assert(rc.frame.rx[0] == want[i][0] - want[i][1], "t_1 must be -1 exactly");
+        cr_assert_eq(setup(rc, RETRO_MODE_EXACT, NULL, &p, &c), RETRO_OK);
+        const retro_frame *f = retro_ctx_frame(rc);
+        cr_assert(f->cs == want[i][0] && f->sn == want[i][1], "angle %d", angles[i]);
+        cr_assert(f->rx[0] == want[i][0] - want[i][1], "t_1 must be -1 exactly");
     }
-    retro_ctx_free(&rc);
+    retro_ctx_free(rc);
 }
 
 /* Effect parameters outside docs/EFFECTS.md's ranges (NaN included) are refused, not baked. */
@@ -200,9 +212,8 @@ Test(frame, effect_parameters_out_of_range_are_errors)
     ctx_t c = {2, 2, 2, 10, 0, h, col, out};
     player_t p = {1, 1, 0, 10, 0, 0, 0};
     retro_effects fx;
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    rc.fx = &fx;
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
     for (int i = 0; i < 8; i++) {
         retro_effects_defaults(&fx);
         fx.morph_height = h;
@@ -216,10 +227,10 @@ Test(frame, effect_parameters_out_of_range_are_errors)
         case 6: fx.flags = RETRO_FX_WATER; fx.water_level = 256; break;
         default: fx.flags = RETRO_FX_MORPH; fx.morph_height = NULL; break;
         }
-        cr_expect_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_EINVAL, "case %d accepted", i);
+        cr_expect_eq(setup(rc, RETRO_MODE_EXACT, &fx, &p, &c), RETRO_EINVAL, "case %d accepted", i);
     }
     retro_effects_defaults(&fx);
     fx.flags = RETRO_FX_FOG | RETRO_FX_SHADE | RETRO_FX_WATER;
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK, "the defaults are valid");
-    retro_ctx_free(&rc);
+    cr_assert_eq(setup(rc, RETRO_MODE_EXACT, &fx, &p, &c), RETRO_OK, "the defaults are valid");
+    retro_ctx_free(rc);
 }

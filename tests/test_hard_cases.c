@@ -112,15 +112,16 @@ Test(hard, reduction_rounds_to_S)
         int S = maps[mi].size;
         const float xs[] = {-1e-30f, -FLT_TRUE_MIN, S >= 3 ? -1e-7f : -1e-30f};
         for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++) {
-            retro_ctx rc;
-            retro_ctx_init(&rc);
+            retro_ctx *rc = retro_ctx_new();
+            cr_assert(rc);
             ctx_t c = {2, 2, S, 8, SKY, maps[mi].height, maps[mi].color, out};
             player_t p = pose(xs[i], xs[i], 0, 100);
-            cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
-            cr_assert(rc.frame.x0 == (float)S && rc.frame.y0 == (float)S,
-                      "S=%d x=%a: x0=%a y0=%a, expected S", S, (double)xs[i], (double)rc.frame.x0,
-                      (double)rc.frame.y0);
-            retro_ctx_free(&rc);
+            retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+            const retro_frame *f;
+            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
+            cr_assert(f->x0 == (float)S && f->y0 == (float)S, "S=%d x=%a: x0=%a y0=%a, expected S", S,
+                      (double)xs[i], (double)f->x0, (double)f->y0);
+            retro_ctx_free(rc);
         }
     }
     free_maps(maps, NMAPS);
@@ -238,18 +239,18 @@ Test(hard, lod_lambda)
         uint32_t col[4] = {0}, out[4];
         ctx_t c = {2, 2, 2, 50, 0, h, col, out};
         player_t p = pose(1, 1, 0, 10);
-        retro_ctx rc;
-        retro_ctx_init(&rc);
-        rc.lod = bad[i];
-        cr_expect_eq(retro_frame_setup(&rc, RETRO_MODE_LOD, &p, &c), RETRO_EINVAL, "lod %g accepted", (double)bad[i]);
-        retro_ctx_free(&rc);
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
+        retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+        o.mode = RETRO_MODE_LOD;
+        o.lod = bad[i];
+        cr_expect_eq(retro_render(rc, retro_kernel_find("naive"), &o, &p, &c), RETRO_EINVAL, "lod %g accepted",
+                     (double)bad[i]);
+        retro_ctx_free(rc);
     }
     static const float lambdas[] = {0.0f, 1e-30f, 0.02f, 0.5f, 1.0f, 100.0f};
     for (size_t i = 0; i < sizeof lambdas / sizeof lambdas[0]; i++) {
-        for (int k = 0; k < MAX_KERNELS; k++)
-            for (int t = 0; t <= MAX_THREADS; t++)
-                g->rc[k][t].lod = lambdas[i];
-        g->chk.lod = lambdas[i];
+        g->lod = g->chk.lod = lambdas[i];
         static const int on[] = {S1, S5, S64};
         for (size_t mi = 0; mi < sizeof on / sizeof on[0]; mi++) {
             const retro_map *m = &maps[on[mi]];

@@ -59,19 +59,21 @@ Test(mesh_family, table_render_is_the_module_render)
     uint32_t a[W * H], b[W * H];
     ctx_t c = {W, H, m.S, 40, MSKY, m.h, m.c, a};
     player_t p = {2.25f, 3.5f, 35, 80, 0, 0, 0};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
     retro_effects fx;
+    retro_render_opts ro = RETRO_RENDER_OPTS_DEFAULT;
+    ro.fx = &fx;
     for (int k = 0; k < 2; k++)
         for (int mode = 0; mode < RETRO_MESH_MODE_COUNT; mode++)
             for (int cull = 0; cull < 2; cull++) {
                 retro_effects_defaults(&fx);
                 fx.flags = RETRO_FX_GOURAUD | RETRO_FX_FOG | (cull ? RETRO_FX_CULL : 0);
-                rc.fx = &fx;
+                ro.mode = mode;
                 c.out = a;
                 const retro_kernel *kr = retro_kernel_find(k ? "mesh-painter" : "mesh-zbuffer");
-                cr_assert_eq(retro_render(&rc, kr, mode, &p, &c), RETRO_OK, "%s", retro_mesh_last_error(&rc));
-                const retro_mesh_stats *st = retro_mesh_last_stats(&rc);
+                cr_assert_eq(retro_render(rc, kr, &ro, &p, &c), RETRO_OK, "%s", retro_mesh_last_error(rc));
+                const retro_mesh_stats *st = retro_mesh_last_stats(rc);
                 cr_assert(st && st->submitted > 0 && st->fragments > 0);
                 cr_assert_eq(cull ? st->culled > 0 : st->culled == 0, 1, "culled %llu", (unsigned long long)st->culled);
                 c.out = b;
@@ -84,7 +86,7 @@ Test(mesh_family, table_render_is_the_module_render)
                 retro_mesh_ctx_free(mc);
                 cr_assert_eq(memcmp(a, b, sizeof a), 0, "%s mode %d cull %d differs", kr->name, mode, cull);
             }
-    retro_ctx_free(&rc);
+    retro_ctx_free(rc);
     mmap_free(&m);
 }
 
@@ -97,21 +99,24 @@ Test(mesh_family, invalid_requests_say_why)
         out[i] = 0x12345678u;
     ctx_t c = {W, H, m.S, 20, MSKY, m.h, m.c, out};
     player_t p = {1, 1, 0, 50, 0, 0, 0};
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = RETRO_FX_TEXTURE | RETRO_FX_GOURAUD;
-    rc.fx = &fx;
-    cr_assert_eq(retro_render(&rc, retro_kernel_find("mesh-zbuffer"), RETRO_MESH_BINARY32, &p, &c), RETRO_EINVAL);
-    cr_assert(strstr(retro_mesh_last_error(&rc), "exclusive"), "%s", retro_mesh_last_error(&rc));
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = RETRO_MESH_BINARY32;
+    o.fx = &fx;
+    cr_assert_eq(retro_render(rc, retro_kernel_find("mesh-zbuffer"), &o, &p, &c), RETRO_EINVAL);
+    cr_assert(strstr(retro_mesh_last_error(rc), "exclusive"), "%s", retro_mesh_last_error(rc));
     for (int i = 0; i < W * H; i++)
         cr_assert_eq(out[i], 0x12345678u, "written on error");
-    rc.fx = NULL;
+    o.mode = RETRO_MESH_INT;
+    o.fx = NULL;
     c.scr_width = 0;
-    cr_assert_eq(retro_render(&rc, retro_kernel_find("mesh-painter"), RETRO_MESH_INT, &p, &c), RETRO_EINVAL);
-    cr_assert(*retro_mesh_last_error(&rc));
-    retro_ctx_free(&rc);
+    cr_assert_eq(retro_render(rc, retro_kernel_find("mesh-painter"), &o, &p, &c), RETRO_EINVAL);
+    cr_assert(*retro_mesh_last_error(rc));
+    retro_ctx_free(rc);
     mmap_free(&m);
 }
 

@@ -297,10 +297,12 @@ static void report_course(void)
     }
     c.out = a;
 
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_COURSE, &p, &c), RETRO_OK);
-    const retro_frame *f = &rc.frame;
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
+    retro_render_opts course = RETRO_RENDER_OPTS_DEFAULT;
+    course.mode = RETRO_MODE_COURSE;
+    const retro_frame *f;
+    cr_assert_eq(retro_frame_prepare(rc, &course, &p, &c, &f), RETRO_OK);
     /* (a) cells read over many poses: never the last row or column. */
     {
         uint8_t *seen = calloc((size_t)S * S, 1);
@@ -308,15 +310,16 @@ static void report_course(void)
         for (int k = 0; k < 40; k++) {
             player_t q = {(float)(rng_next(&rng) % (uint64_t)S) + 0.37f, (float)(rng_next(&rng) % (uint64_t)S) + 0.61f,
                           (int)(rng_next(&rng) % 360), z, 0, 0, 0};
-            retro_ctx r2;
-            retro_ctx_init(&r2);
-            cr_assert_eq(retro_frame_setup(&r2, RETRO_MODE_COURSE, &q, &c), RETRO_OK);
+            retro_ctx *r2 = retro_ctx_new();
+            cr_assert(r2);
+            const retro_frame *f2;
+            cr_assert_eq(retro_frame_prepare(r2, &course, &q, &c, &f2), RETRO_OK);
             for (int d = 1; d < D; d++) {
-                float qx = r2.frame.lx[d], qy = r2.frame.ly[d];
-                for (int u = 0; u < W; u++, qx += r2.frame.sx[d], qy += r2.frame.sy[d])
+                float qx = f2->lx[d], qy = f2->ly[d];
+                for (int u = 0; u < W; u++, qx += f2->sx[d], qy += f2->sy[d])
                     seen[(size_t)retro_course_cell(qy, S) * S + (size_t)retro_course_cell(qx, S)] = 1;
             }
-            retro_ctx_free(&r2);
+            retro_ctx_free(r2);
         }
         long last = 0, other = 0;
         for (int j = 0; j < S; j++)
@@ -407,7 +410,7 @@ static void report_course(void)
         printf("  in all: %ld of %ld samples (%.3g%%) read another cell\n", total_cells, samples,
                100.0 * (double)total_cells / (double)samples);
     }
-    retro_ctx_free(&rc);
+    retro_ctx_free(rc);
     free(a);
     free(b);
     retro_map_free(&m);

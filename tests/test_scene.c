@@ -90,7 +90,7 @@ Test(scene, defaults)
     cr_assert_eq(fx->water_color, 0x1e5aa000u);
     EQF(fx->water_alpha0, 0.35);
     EQF(fx->water_alpha_per_unit, 0.03);
-    EQF(fx->lod, 0.02);
+    EQF(s.lod, 0.02);
     cr_assert_eq(fx->pitch, 0);
     cr_assert_null(fx->morph_height);
     EQF(fx->morph_t, 0);
@@ -165,7 +165,7 @@ Test(scene, every_section)
     cr_assert_eq(fx->water_color, 0x10203000u);
     EQF(fx->water_alpha0, 0.5);
     EQF(fx->water_alpha_per_unit, 0.1);
-    EQF(fx->lod, 0.05);
+    EQF(s.lod, 0.05);
     cr_assert_eq(fx->pitch, -40);
     EQF(fx->morph_t, 0.75);
     cr_assert_null(fx->morph_height, "the caller loads the keyframe");

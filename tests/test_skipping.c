@@ -119,7 +119,7 @@ Test(skipping, camera_at_block_maximum)
         new_map(g);
         player_t p = at((float)S / 3, (float)S / 4, 20, 100);
         check(g, "block maximum (setup)", &m, p, 37, 23, 2 * S, NULL);
-        const retro_pyramid *pyr = g->rc[SKIP].pyr;
+        const retro_pyramid *pyr = retro_ctx_frame(g->rc[SKIP])->pyr;
         cr_assert(pyr && pyr->lmax >= RETRO_PYR_LMIN);
         int tried = 0;
         for (int L = RETRO_PYR_LMIN; L <= pyr->lmax; L++)

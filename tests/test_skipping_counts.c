@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ctx.h"
+#include "frame.h"
 #include "hmax_pyramid.h"
 #include "kernels.h"
 #include "test_util.h"
@@ -26,29 +28,30 @@ static void make_map(retro_map *m, int S)
 }
 
 /* The samples of one frame as the counting build of ybuffer sees them. */
-static retro_sample_counts count(retro_ctx *rc, retro_mode mode, const retro_map *m, player_t p, int W, int H, int D,
-                                 uint32_t *out)
+static retro_sample_counts count(retro_ctx *rc, retro_mode mode, int no_skip, const retro_map *m, player_t p, int W,
+                                 int H, int D, uint32_t *out)
 {
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = (int)mode;
+    o.no_skip = no_skip;
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
     ctx_t c = {W, H, m->size, D, 0, m->height, m->color, out};
     memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
-    cr_assert_eq(retro_render(rc, &counted, mode, &p, &c), RETRO_OK);
-    cr_assert(rc->no_skip || rc->frame.pyr, "the frame had no pyramid");
+    cr_assert_eq(retro_render(rc, &counted, &o, &p, &c), RETRO_OK);
+    cr_assert(no_skip || retro_ctx_frame(rc)->pyr, "the frame had no pyramid");
     return retro_ybuffer_counts;
 }
 
 static void counts_mode(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
                         int must_skip)
 {
-    retro_ctx on, off;
-    retro_ctx_init(&on);
-    retro_ctx_init(&off);
-    off.no_skip = 1;
+    retro_ctx *on = retro_ctx_new(), *off = retro_ctx_new();
+    cr_assert(on && off);
     size_t n = (size_t)W * (size_t)H;
     uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     cr_assert(a && b);
-    retro_sample_counts s = count(&on, mode, m, p, W, H, D, a), t = count(&off, mode, m, p, W, H, D, b);
+    retro_sample_counts s = count(on, mode, 0, m, p, W, H, D, a), t = count(off, mode, 1, m, p, W, H, D, b);
     cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the counting build's frames differ", what);
     cr_assert_eq(s.painting, t.painting, "%s: %llu samples paint with skipping, %llu without", what,
                  (unsigned long long)s.painting, (unsigned long long)t.painting);
@@ -62,8 +65,8 @@ static void counts_mode(retro_mode mode, const char *what, const retro_map *m, p
                      (unsigned long long)t.evaluated);
     free(a);
     free(b);
-    retro_ctx_free(&on);
-    retro_ctx_free(&off);
+    retro_ctx_free(on);
+    retro_ctx_free(off);
 }
 
 static void counts_compare(const char *what, const retro_map *m, player_t p, int W, int H, int D, int must_skip)
@@ -128,8 +131,9 @@ Test(skipping, probe_bound)
         for (int k = 0; k < 3; k++) /* ... with a few spikes */
             m.height[rng_next(&st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
         uint32_t out[1];
-        retro_ctx rc;
-        retro_ctx_init(&rc);
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
+        retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
         for (int frame = 0; frame < 60; frame++) {
             int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
             int D = 2 + (int)(rng_next(&st) % (unsigned)(6 * S));
@@ -137,8 +141,8 @@ Test(skipping, probe_bound)
             float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
             player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
             ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
-            cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
-            const retro_frame *f = &rc.frame;
+            const retro_frame *f;
+            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
             cr_assert_not_null(f->pyr);
             int pow2 = (S & (S - 1)) == 0;
             for (int q = 0; q < 40; q++) {
@@ -178,7 +182,7 @@ Test(skipping, probe_bound)
                 skipped += e - d;
             }
         }
-        retro_ctx_free(&rc);
+        retro_ctx_free(rc);
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld distances)", skipped);

@@ -70,10 +70,12 @@ void render_threads(const char *kernel, retro_mode mode, const player_t *p, ctx_
 {
     const retro_kernel *k = retro_kernel_find(kernel);
     cr_assert(k, "no kernel %s", kernel);
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    rc.threads = threads;
-    retro_err e = retro_render(&rc, k, mode, p, c);
-    retro_ctx_free(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc, "out of memory");
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.threads = threads;
+    retro_err e = retro_render(rc, k, &o, p, c);
+    retro_ctx_free(rc);
     cr_assert_eq(e, RETRO_OK, "%s/%s: %s", kernel, retro_mode_name(mode), retro_strerror(e));
 }

@@ -48,8 +48,6 @@ typedef struct retro_effects {
     int water_level;
     uint32_t water_color;      /* R<<24 | G<<16 | B<<8 */
     float water_alpha0, water_alpha_per_unit;
-    /* lod: step = max(1, floor(d * lod)) */
-    float lod;
     /* horizon: rows the horizon moves up (positive pitch looks down) */
     int pitch;
     /* morph: heights h0 + (h1 - h0) * t between the map's heights and morph_height */
@@ -83,6 +81,9 @@ typedef struct retro_scene {
     retro_keyframe keys[RETRO_SCENE_MAX_KEYS];
     int nkeys;
     retro_effects fx;
+    /* [lod] rate: mode lod's step max(1, floor(d * lod)), for retro_render_opts.lod (the lod
+     * effect, RETRO_FX_LOD in fx.flags, asks for mode lod; its rate is given only there) */
+    float lod;
 } retro_scene;
 
 /* Parses an INI scene file (inih). On error returns -1 with err as "FILE:LINE: [section] key:

@@ -6,11 +6,11 @@
 #include "check.h"
 #include "retro_scene.h"
 
-static void add(retro_check *chk, const retro_kernel *k, int level, int threads)
+static int add(retro_check *chk, const retro_kernel *k, int level, int threads)
 {
     if (chk->n >= RETRO_CHECK_MAX_VARIANTS)
-        return;
-    retro_check_variant *v = &chk->v[chk->n++];
+        return 0;
+    retro_check_variant *v = &chk->v[chk->n];
     v->kernel = k;
     v->level = level;
     v->threads = threads;
@@ -18,8 +18,10 @@ static void add(retro_check *chk, const retro_kernel *k, int level, int threads)
         snprintf(v->label, sizeof v->label, "%s/%s/%dt", k->name, retro_isa_names[level], threads);
     else
         snprintf(v->label, sizeof v->label, "%s/%s", k->name, retro_isa_names[level]);
-    retro_ctx_init(&v->ctx);
-    v->ctx.threads = threads;
+    if (!(v->ctx = retro_ctx_new()))
+        return -1;
+    chk->n++;
+    return 0;
 }
 
 int retro_check_init(retro_check *chk, const retro_family *fam, const char *only, int max_threads)
@@ -28,8 +30,7 @@ int retro_check_init(retro_check *chk, const retro_family *fam, const char *only
     chk->family = fam;
     chk->level = retro_cpu_level(retro_cpu_features());
     chk->select_level = chk->select_threads = -1;
-    retro_ctx_init(&chk->ref_ctx);
-    int found = 0;
+    int found = 0, oom = !(chk->ref_ctx = retro_ctx_new());
     for (int l = 0; l <= chk->level; l++) {
         retro_cpu_limit(retro_isa_names[l]);
         for (size_t i = 0; i < retro_kernel_count; i++) {
@@ -41,20 +42,20 @@ int retro_check_init(retro_check *chk, const retro_family *fam, const char *only
                 continue;
             if (k->flags & RETRO_KF_THREADED)
                 for (int t = 1; t <= max_threads; t++)
-                    add(chk, k, l, t);
+                    oom |= add(chk, k, l, t);
             else
-                add(chk, k, l, 0);
+                oom |= add(chk, k, l, 0);
         }
     }
     retro_cpu_limit(retro_isa_names[chk->level]);
-    return only && !found ? -1 : 0;
+    return oom ? -2 : only && !found ? -1 : 0;
 }
 
 void retro_check_free(retro_check *chk)
 {
     for (int i = 0; i < chk->n; i++)
-        retro_ctx_free(&chk->v[i].ctx);
-    retro_ctx_free(&chk->ref_ctx);
+        retro_ctx_free(chk->v[i].ctx);
+    retro_ctx_free(chk->ref_ctx);
     free(chk->ref);
     free(chk->out);
     memset(chk, 0, sizeof *chk);
@@ -82,6 +83,18 @@ static int reserve(retro_check *chk, size_t n)
     return 0;
 }
 
+/* What every render of the checker asks for. */
+static retro_render_opts opts(const retro_check *chk, int mode, const retro_effects *fx, int threads)
+{
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.fx = fx;
+    o.lod = chk->lod;
+    o.threads = threads;
+    o.simd_skip = chk->simd_skip;
+    return o;
+}
+
 static void run_variant(retro_check *chk, retro_check_variant *v, int mode, const retro_effects *fx,
                         const player_t *p, ctx_t c, retro_check_result *r)
 {
@@ -91,17 +104,15 @@ static void run_variant(retro_check *chk, retro_check_variant *v, int mode, cons
         (chk->select_threads >= 0 && v->threads && v->threads != chk->select_threads))
         return;
     retro_cpu_limit(retro_isa_names[v->level]);
-    if (retro_kernel_check(v->kernel, mode, fx, NULL, 0) != RETRO_OK) {
+    retro_render_opts o = opts(chk, mode, fx, v->threads);
+    if (retro_render_check(v->kernel, &o, NULL, 0) != RETRO_OK) {
         retro_cpu_limit(retro_isa_names[chk->level]);
         return;
     }
     r->ran = 1;
     c.out = chk->out;
     poison(chk->out, n);
-    v->ctx.fx = fx;
-    v->ctx.lod = chk->lod;
-    r->err = retro_render(&v->ctx, v->kernel, mode, p, &c);
-    v->ctx.fx = NULL;
+    r->err = retro_render(v->ctx, v->kernel, &o, p, &c);
     retro_cpu_limit(retro_isa_names[chk->level]);
     if (r->err)
         return;
@@ -128,10 +139,8 @@ retro_err retro_check_frame(retro_check *chk, int mode, const retro_effects *fx,
     ctx_t rc = *c;
     rc.out = chk->ref;
     poison(chk->ref, n);
-    chk->ref_ctx.fx = fx;
-    chk->ref_ctx.lod = chk->lod;
-    retro_err e = retro_render(&chk->ref_ctx, retro_family_reference(chk->family), mode, p, &rc);
-    chk->ref_ctx.fx = NULL;
+    retro_render_opts o = opts(chk, mode, fx, 0);
+    retro_err e = retro_render(chk->ref_ctx, retro_family_reference(chk->family), &o, p, &rc);
     if (e)
         return e;
     for (size_t i = 0; i < n; i++)
@@ -162,9 +171,9 @@ retro_err retro_check_against(retro_check *chk, int mode, const retro_effects *f
 
 void retro_check_map_changed(retro_check *chk)
 {
-    retro_ctx_map_changed(&chk->ref_ctx);
+    retro_ctx_map_changed(chk->ref_ctx);
     for (int i = 0; i < chk->n; i++)
-        retro_ctx_map_changed(&chk->v[i].ctx);
+        retro_ctx_map_changed(chk->v[i].ctx);
 }
 
 void retro_check_describe(const retro_check *chk, const retro_check_variant *v, const retro_check_result *r,

@@ -22,7 +22,7 @@ typedef struct retro_check_variant {
     int level;       /* ISA level (index of retro_isa_names) forced while it renders */
     int threads;     /* threads for a threaded kernel, 0 for the others */
     char label[40];  /* "omp/avx2/2t", "simd-sse2/avx512": kernel/level[/threads] */
-    retro_ctx ctx;   /* reused from frame to frame, as a real caller would */
+    retro_ctx *ctx;  /* reused from frame to frame, as a real caller would */
 } retro_check_variant;
 
 /* What one variant did with one frame. */
@@ -41,18 +41,20 @@ typedef struct retro_check {
     retro_check_variant v[RETRO_CHECK_MAX_VARIANTS];
     int n;
     int level;         /* the ISA level in force when the set was made, restored after each render */
-    retro_ctx ref_ctx; /* the reference kernel's context */
+    retro_ctx *ref_ctx; /* the reference kernel's context */
     uint32_t *ref, *out; /* the last frame's reference and variant images (W*H) */
     size_t cap;
     /* Variants to run, -1 for all (retro_check_init's choice): only this ISA level, only
      * threaded kernels at this thread count. The fuzz target lets its input choose. */
     int select_level, select_threads;
-    float lod;         /* mode lod's step growth given to every context (retro_ctx.lod), 0 default */
+    float lod;         /* mode lod's step growth every render asks for (retro_render_opts.lod), 0 default */
+    int simd_skip;     /* every render's retro_render_opts.simd_skip */
 } retro_check;
 
 /* Fills chk with every kernel of fam but its reference that runs here, at every ISA level up
  * to the one in force, threaded kernels at 1..max_threads threads. only: a kernel name, or
- * NULL for all. Returns 0, or -1 when only names no kernel of fam. */
+ * NULL for all. Returns 0, -1 when only names no kernel of fam, -2 when out of memory (free
+ * chk either way). */
 int retro_check_init(retro_check *chk, const retro_family *fam, const char *only, int max_threads);
 void retro_check_free(retro_check *chk);
 

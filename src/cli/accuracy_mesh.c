@@ -10,10 +10,10 @@
 int acc_mesh_init(acc_mesh *am, int poses, int W, int H)
 {
     memset(am, 0, sizeof *am);
-    retro_ctx_init(&am->rc);
+    if (!(am->rc = retro_ctx_new()))
+        return -1;
     retro_effects_defaults(&am->fx);
     am->fx.flags = RETRO_FX_CULL;
-    am->rc.fx = &am->fx;
     for (int m = 0; m < ACC_MESH_MODES; m++)
         if (!(am->ms[m] = malloc(sizeof(double) * (size_t)(poses > 0 ? poses : 1))))
             return -1;
@@ -28,7 +28,7 @@ void acc_mesh_free(acc_mesh *am)
         free(am->ms[m]);
     free(am->ref);
     free(am->img);
-    retro_ctx_free(&am->rc);
+    retro_ctx_free(am->rc);
 }
 
 const retro_kernel *acc_best_in_family(const retro_family *fam, int mode, const retro_effects *fx)
@@ -46,10 +46,13 @@ static double time_mode(acc_mesh *am, int mode, ctx_t *c, const player_t *p)
 {
     const retro_kernel *k = acc_best_in_family(&retro_family_mesh, mode, &am->fx);
     double t[ACC_MESH_TIMED];
-    retro_render(&am->rc, k, mode, p, c);
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = mode;
+    o.fx = &am->fx;
+    retro_render(am->rc, k, &o, p, c);
     for (int i = 0; i < ACC_MESH_TIMED; i++) {
         double t0 = cli_now_ms();
-        retro_render(&am->rc, k, mode, p, c);
+        retro_render(am->rc, k, &o, p, c);
         t[i] = cli_now_ms() - t0;
     }
     qsort(t, ACC_MESH_TIMED, sizeof t[0], cli_cmp_double);
@@ -95,22 +98,23 @@ int acc_write_pair(const char *dir, const retro_map *m, int W, int H, int D, uin
     player_t p = {view.x, view.y, 30, view.height, 0, 0, 0};
     size_t px = (size_t)W * (size_t)H;
     uint32_t *vox = malloc(px * sizeof *vox), *mesh = malloc(px * sizeof *mesh), *diff = malloc(px * sizeof *diff);
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = RETRO_FX_CULL;
     int status = -1;
     ctx_t c = {W, H, m->size, D, sky, m->height, m->color, vox};
-    if (!vox || !mesh || !diff)
+    retro_render_opts vo = RETRO_RENDER_OPTS_DEFAULT, mo = RETRO_RENDER_OPTS_DEFAULT;
+    mo.mode = RETRO_MESH_BINARY64;
+    mo.fx = &fx;
+    if (!vox || !mesh || !diff || !rc)
         snprintf(err, n, "out of memory for the picture pair");
-    else if (retro_render(&rc, retro_kernel_best(RETRO_MODE_EXACT), RETRO_MODE_EXACT, &p, &c))
+    else if (retro_render(rc, retro_kernel_best(RETRO_MODE_EXACT), &vo, &p, &c))
         snprintf(err, n, "the voxel frame of the picture pair failed");
     else {
         c.out = mesh;
-        rc.fx = &fx;
-        if (retro_render(&rc, retro_family_reference(&retro_family_mesh), RETRO_MESH_BINARY64, &p, &c))
-            snprintf(err, n, "the mesh frame of the picture pair failed: %s", retro_mesh_last_error(&rc));
+        if (retro_render(rc, retro_family_reference(&retro_family_mesh), &mo, &p, &c))
+            snprintf(err, n, "the mesh frame of the picture pair failed: %s", retro_mesh_last_error(rc));
         else
             status = 0;
     }
@@ -130,7 +134,7 @@ int acc_write_pair(const char *dir, const retro_map *m, int W, int H, int D, uin
         snprintf(path, sizeof path, "%s/accuracy-pair-%s.png", dir, names[i]);
         status = retro_image_write(path, imgs[i], W, H, err, n) ? -1 : 0;
     }
-    retro_ctx_free(&rc);
+    retro_ctx_free(rc);
     free(vox);
     free(mesh);
     free(diff);

@@ -13,7 +13,7 @@
 enum { ACC_MESH_MODES = 3, ACC_MESH_TIMED = 3 };
 
 typedef struct {
-    retro_ctx rc;
+    retro_ctx *rc;
     retro_effects fx;        /* `cull`: front faces only, as a terrain renderer draws them */
     acc_stats stats[ACC_MESH_MODES];
     double *ms[ACC_MESH_MODES]; /* per pose, the fastest mesh kernel for the mode */

@@ -43,12 +43,14 @@ static double render_variant(retro_ctx *rc, const retro_kernel *k, variant *v, c
     int w = v->half ? (W + 1) / 2 : W, h = v->half ? (H + 1) / 2 : H;
     ctx_t c = {w, h, m->size, D, SKY, m->height, m->color, v->half ? small : out};
     static int peer_ybuf[W]; /* the peer's y-buffer: scratch allocated once */
-    rc->lod = v->lod;
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = v->mode;
+    o.lod = v->lod;
     double t0 = cli_now_ms();
     if (v->peer)
         peer_voxelspace_render(p, &c, PEER_VOXELSPACE_DZ_GROWTH, peer_ybuf);
     else
-        retro_render(rc, k, v->mode, p, &c);
+        retro_render(rc, k, &o, p, &c);
     double t = cli_now_ms() - t0;
     if (v->half)
         for (int y = 0; y < H; y++)
@@ -169,8 +171,11 @@ int cmd_accuracy(int argc, char **argv)
     acc_mesh am;
     if (acc_mesh_init(&am, (int)mesh_poses * ns, W, H))
         return cli_error("accuracy", "out of memory");
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    if (!rc) {
+        acc_mesh_free(&am);
+        return cli_error("accuracy", "out of memory");
+    }
     int total = 0, status = 0;
     char err[512];
     uint64_t rng = seed;
@@ -185,7 +190,7 @@ int cmd_accuracy(int argc, char **argv)
         }
         /* The previous scene's buffers were freed: this map may sit at the same address, which
          * the contexts' caches (map maximum, packed map) would take for the same map. */
-        retro_ctx_map_changed(&rc);
+        retro_ctx_map_changed(rc);
         fprintf(stderr, "accuracy: %s, %ld poses...\n", scenes[s], poses);
         for (int n = 0; n < poses; n++) {
             player_t p;
@@ -196,8 +201,8 @@ int cmd_accuracy(int argc, char **argv)
                 acc_mesh_pose(&am, &c, &p);
             }
             for (int k = 0; k < nv; k++) {
-                vars[k].ms_y[vars[k].n] = time_variant(&rc, ybuffer, &vars[k], &m, &p, img, small);
-                vars[k].ms[vars[k].n++] = time_variant(&rc, retro_kernel_best(vars[k].mode), &vars[k], &m, &p,
+                vars[k].ms_y[vars[k].n] = time_variant(rc, ybuffer, &vars[k], &m, &p, img, small);
+                vars[k].ms[vars[k].n++] = time_variant(rc, retro_kernel_best(vars[k].mode), &vars[k], &m, &p,
                                                        img, small);
                 if (k == 0)
                     memcpy(truth, img, sizeof(uint32_t) * W * H);
@@ -246,7 +251,7 @@ int cmd_accuracy(int argc, char **argv)
         free(vars[k].ms);
         free(vars[k].ms_y);
     }
-    retro_ctx_free(&rc);
+    retro_ctx_free(rc);
     acc_mesh_free(&am);
     free(truth);
     free(img);

@@ -67,11 +67,12 @@ int cmd_kernels(int argc, char **argv)
         }
     for (size_t f = 0; f < retro_family_count; f++)
         printf("# family %s: reference %s\n", retro_families[f]->name, retro_families[f]->reference);
-    retro_ctx rc;
-    retro_ctx_init(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    if (!rc)
+        return cli_error("kernels", "out of memory");
     printf("# isa: %s (RETRO_ISA or --isa lowers it)\n", retro_cpu_level_name(retro_cpu_features()));
-    printf("# threads: %d (OMP_NUM_THREADS or --threads)\n", retro_ctx_threads(&rc));
-    printf("# binding: %s\n", retro_ctx_binding(&rc));
-    retro_ctx_free(&rc);
+    printf("# threads: %d (OMP_NUM_THREADS or --threads)\n", retro_ctx_threads(rc));
+    printf("# binding: %s\n", retro_ctx_binding(rc));
+    retro_ctx_free(rc);
     return 0;
 }

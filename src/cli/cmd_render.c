@@ -7,6 +7,7 @@
 
 #include "timing.h"
 #include "cli.h"
+#include "ctx.h"
 #include "hmax_pyramid.h"
 #include "kernels.h"
 #include "retro_mesh.h"
@@ -68,7 +69,7 @@ static int render_extra(void *user, const char *a, const char *v)
 /* The mesh frame's counts, kept by the family from the frame just rendered. */
 static int print_mesh_stats(const render_job *j)
 {
-    const retro_mesh_stats *s = retro_mesh_last_stats(&j->rc);
+    const retro_mesh_stats *s = retro_mesh_last_stats(j->rc);
     if (!s)
         return cli_error("render", "no mesh frame was rendered");
     uint64_t front = s->submitted - s->culled;
@@ -86,10 +87,10 @@ static int time_frames(render_job *j, const player_t *p, long n)
     double *ms = malloc((size_t)n * sizeof *ms);
     if (!ms)
         return cli_error("render", "out of memory");
-    retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+    retro_err e = retro_render(j->rc, j->k, &j->opts, p, &j->c);
     for (long i = 0; !e && i < n; i++) {
         double t0 = cli_now_ms();
-        e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+        e = retro_render(j->rc, j->k, &j->opts, p, &j->c);
         ms[i] = cli_now_ms() - t0;
     }
     if (e) {
@@ -114,10 +115,10 @@ static int print_stats(render_job *j, const player_t *p)
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
     memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
-    retro_err e = retro_render(&j->rc, &counted, j->mode, p, &j->c);
+    retro_err e = retro_render(j->rc, &counted, &j->opts, p, &j->c);
     if (e)
         return cli_error("render", "%s", retro_strerror(e));
-    const retro_frame *f = &j->rc.frame;
+    const retro_frame *f = retro_ctx_frame(j->rc);
     int n = f->mode == RETRO_MODE_LOD ? f->ndist : f->D;
     double all = (double)f->W * (double)(n > 1 ? n - 1 : 0);
     const retro_sample_counts *s = &retro_ybuffer_counts;
@@ -127,11 +128,11 @@ static int print_stats(render_job *j, const player_t *p)
     printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
     /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
     const retro_kernel *vk = retro_kernel_find("simd-avx512");
-    if (vk && retro_kernel_runs_here(vk) && !retro_kernel_check(vk, j->mode, j->rc.fx, NULL, 0)) {
+    if (vk && retro_kernel_runs_here(vk) && !retro_render_check(vk, &j->opts, NULL, 0)) {
         retro_kernel vc = *vk;
         vc.fn = retro_kernel_simd_avx512_counted;
         memset(&retro_simd_counts, 0, sizeof retro_simd_counts);
-        if ((e = retro_render(&j->rc, &vc, j->mode, p, &j->c)))
+        if ((e = retro_render(j->rc, &vc, &j->opts, p, &j->c)))
             return cli_error("render", "%s", retro_strerror(e));
         const retro_sample_counts *v = &retro_simd_counts;
         printf("simd-avx512 evaluated: %" PRIu64 " (%.2f%%), painting: %" PRIu64 ", probes: %" PRIu64
@@ -186,8 +187,8 @@ int cmd_render(int argc, char **argv)
     render_job j;
     if (job_open("render", &o, &j))
         return CLI_EBADINPUT;
-    j.rc.no_skip = no_skip;
-    j.rc.simd_skip = simd_skip;
+    j.opts.no_skip = no_skip;
+    j.opts.simd_skip = simd_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
     int status = time_n ? time_frames(&j, &p, time_n) : 0;

@@ -217,7 +217,12 @@ static int run_families(verify_run *v)
         const retro_family *fam = retro_families[f];
         if (only && only->family != fam)
             continue;
-        if (retro_check_init(&v->chk, fam, v->only, 3)) {
+        int bad = retro_check_init(&v->chk, fam, v->only, 3);
+        if (bad == -2) {
+            retro_check_free(&v->chk);
+            return cli_error("verify", "out of memory for the checker's contexts");
+        }
+        if (bad) {
             retro_check_free(&v->chk);
             return cli_error("verify", "kernel '%s' is the %s family's reference: it is what the others are "
                                        "compared with", v->only, fam->name);

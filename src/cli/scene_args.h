@@ -42,11 +42,13 @@ typedef struct render_job {
     retro_map map;
     uint8_t *morph;      /* the morph keyframe's heights, or NULL */
     const retro_kernel *k;
-    retro_mode mode;     /* a mode of k's family (retro_family_mode_name) */
+    /* what every frame asks for, said once: the mode (of k's family, as it renders: a scene's
+     * lod effect makes it lod), the scene's effects (NULL for a plain MAP), lod rate, threads */
+    retro_render_opts opts;
     struct retro_view view; /* the map's default view: what neither file nor flags set */
     uint32_t *out;
     ctx_t c;
-    retro_ctx rc;
+    retro_ctx *rc;
     int chosen;          /* the kernel was picked for the CPU and mode, not named by -k */
     int said;            /* the "what ran" line is printed */
 } render_job;
@@ -63,7 +65,7 @@ int job_write(const char *cmd, render_job *j, const player_t *p, const char *pat
 void job_close(render_job *j);
 /* The one-line error for a failed render (a mesh frame's message names what is wrong). */
 int job_error(const char *cmd, const render_job *j, retro_err e);
-/* j->mode's name in its kernel's family. */
+/* j->opts.mode's name in its kernel's family. */
 const char *job_mode_name(const render_job *j);
 
 #endif

@@ -30,7 +30,7 @@ static int open_maps(const char *cmd, const char *prefix, render_job *j)
     char err[1400];
     if (retro_map_load(prefix, &j->map, err, sizeof err))
         return cli_error(cmd, "%s", err);
-    if (j->k->family == &retro_family_voxel && j->mode == RETRO_MODE_COURSE && j->map.size < 2)
+    if (j->k->family == &retro_family_voxel && j->opts.mode == RETRO_MODE_COURSE && j->map.size < 2)
         return cli_error(cmd, "mode course needs a map of size 2 or more");
     if ((j->scene.fx.flags & RETRO_FX_MORPH) && load_morph(cmd, j))
         return CLI_EBADINPUT;
@@ -38,9 +38,10 @@ static int open_maps(const char *cmd, const char *prefix, render_job *j)
     return 0;
 }
 
+/* The kernel and the options of every frame; the library decides the mode a frame renders in
+ * and whether the kernel can (retro_render_check), and says why not. */
 static int pick_kernel(const char *cmd, const render_opts *o, render_job *j)
 {
-    retro_effects *fx = &j->scene.fx;
     const retro_kernel *named = o->kernel ? retro_kernel_find(o->kernel) : NULL;
     if (o->kernel && !named)
         return cli_error(cmd, "unknown kernel '%s' (retro kernels lists them)", o->kernel);
@@ -51,22 +52,19 @@ static int pick_kernel(const char *cmd, const render_opts *o, render_job *j)
         fam = &retro_family_mesh;
     if (o->have_mode && retro_family_mode_parse(fam, o->mode_name, &m))
         return cli_error(cmd, "kernel %s (family %s) has no mode '%s'", named->name, fam->name, o->mode_name);
-    if (fam == &retro_family_voxel) {
-        /* A scene's lod effect is mode lod unless the command line asks for another mode. */
-        j->mode = o->have_mode ? (retro_mode)m : (fx->flags & RETRO_FX_LOD) ? RETRO_MODE_LOD : RETRO_MODE_EXACT;
-        if (fx->flags && j->mode != RETRO_MODE_EXACT && j->mode != RETRO_MODE_LOD)
-            return cli_error(cmd, "%s: effects need mode exact or lod, not %s", o->map,
-                             retro_mode_name(j->mode));
-    } else
-        j->mode = (retro_mode)m; /* binary32 unless -m says otherwise */
-    j->k = named ? named
-         : fam == &retro_family_voxel ? retro_kernel_best(j->mode)
-                                      : retro_family_best(fam, (int)j->mode, j->is_scene ? fx : NULL);
+    /* the family's first mode (voxel exact, mesh binary32) unless -m names one */
+    j->opts.mode = o->have_mode ? m : 0;
+    /* A plain map renders exactly as before scenes existed: no effects block at all. */
+    j->opts.fx = j->is_scene ? &j->scene.fx : NULL;
+    j->opts.lod = j->scene.lod;
+    j->opts.threads = (int)o->threads;
+    j->k = named ? named : retro_family_best(fam, j->opts.mode, j->opts.fx);
     if (!j->k)
         j->k = retro_family_reference(fam); /* refused below, with the reason */
-    char why[128];
-    if (retro_kernel_check(j->k, j->mode, j->is_scene ? fx : NULL, why, sizeof why))
-        return cli_error(cmd, "%s", why);
+    char why[160];
+    if (retro_render_check(j->k, &j->opts, why, sizeof why))
+        return cli_error(cmd, "%s: %s", o->map, why);
+    j->opts.mode = retro_render_mode(j->k, &j->opts); /* a scene's lod effect: mode lod */
     return 0;
 }
 
@@ -83,7 +81,7 @@ static int open_job(const char *cmd, const render_opts *o, render_job *j)
         prefix = j->scene.map;
     retro_scene *s = &j->scene;
     if (o->have_lod) /* --lod 0 means the default, as for a plain map */
-        s->fx.lod = o->lod > 0 ? o->lod : RETRO_LOD_DEFAULT;
+        s->lod = o->lod > 0 ? o->lod : RETRO_LOD_DEFAULT;
     if (pick_kernel(cmd, o, j) || open_maps(cmd, prefix, j))
         return CLI_EBADINPUT;
 
@@ -95,10 +93,6 @@ static int open_job(const char *cmd, const render_opts *o, render_job *j)
     ctx_t c = {W, H, j->map.size, (int)D, o->have_sky ? o->sky : s->sky, j->map.height,
                j->map.color, j->out};
     j->c = c;
-    j->rc.threads = (int)o->threads;
-    j->rc.lod = o->have_lod ? o->lod : (s->fx.flags & RETRO_FX_LOD) ? s->fx.lod : 0.0f;
-    /* A plain map renders exactly as before scenes existed: no effects block at all. */
-    j->rc.fx = j->is_scene ? &s->fx : NULL;
     work_warn(cmd, j->k, W, H, D);
     return 0;
 }
@@ -106,7 +100,9 @@ static int open_job(const char *cmd, const render_opts *o, render_job *j)
 int job_open(const char *cmd, const render_opts *o, render_job *j)
 {
     memset(j, 0, sizeof *j);
-    retro_ctx_init(&j->rc);
+    j->opts = retro_render_opts_default();
+    if (!(j->rc = retro_ctx_new()))
+        return cli_error(cmd, "out of memory");
     if (open_job(cmd, o, j)) {
         job_close(j);
         return CLI_EBADINPUT;
@@ -146,19 +142,19 @@ void job_pose(render_job *j, const render_opts *o, int frame, player_t *p)
 
 int job_error(const char *cmd, const render_job *j, retro_err e)
 {
-    const char *why = j->k->family == &retro_family_mesh ? retro_mesh_last_error(&j->rc) : "";
+    const char *why = j->k->family == &retro_family_mesh ? retro_mesh_last_error(j->rc) : "";
     return cli_error(cmd, "%s", *why ? why : retro_strerror(e));
 }
 
 const char *job_mode_name(const render_job *j)
 {
-    return retro_family_mode_name(j->k->family, (int)j->mode);
+    return retro_family_mode_name(j->k->family, j->opts.mode);
 }
 
 int job_write(const char *cmd, render_job *j, const player_t *p, const char *path)
 {
     char err[1400];
-    retro_err e = retro_render(&j->rc, j->k, j->mode, p, &j->c);
+    retro_err e = retro_render(j->rc, j->k, &j->opts, p, &j->c);
     if (e)
         return job_error(cmd, j, e);
     if (retro_image_write(path, j->out, j->c.scr_width, j->c.scr_height, err, sizeof err))
@@ -174,7 +170,7 @@ int job_write(const char *cmd, render_job *j, const player_t *p, const char *pat
 
 void job_close(render_job *j)
 {
-    retro_ctx_free(&j->rc);
+    retro_ctx_free(j->rc);
     free(j->out);
     free(j->morph);
     retro_map_free(&j->map);

@@ -1,8 +1,8 @@
 /* The viewer's adapter to the library (see view_render.h): kernel table walks, mode and effect
- * rules, the render call. The rules are the library's: a kernel must render the scene's
- * effects (retro_kernel_check), modes are its family's (Tab into another family starts at the
- * family's first mode); in the voxel family effects need mode exact or lod, and the scene's
- * lod effect makes mode exact render as lod. */
+ * rules, the render call. The rules are the library's (retro_render_check, retro_render_mode):
+ * a kernel must render the scene's effects, modes are its family's (Tab into another family
+ * starts at the family's first mode), effects are defined on some modes only (voxel: exact and
+ * lod), and the scene's lod effect makes voxel mode exact render as lod. */
 #include "view_render.h"
 
 #include <stdio.h>
@@ -28,16 +28,36 @@ static int is_voxel(const view_state *v)
     return kernel(v)->family == &retro_family_voxel;
 }
 
-static retro_mode effective(const view_state *v, retro_mode m)
+/* What a frame in mode m asks for: the job's options with the viewer's effects switch and
+ * thread count. */
+static retro_render_opts opts_for(const view_state *v, retro_mode m)
 {
-    return is_voxel(v) && v->fx_on && (scene_fx(v) & RETRO_FX_LOD) && m == RETRO_MODE_EXACT ? RETRO_MODE_LOD : m;
+    retro_render_opts o = v->j.opts;
+    o.mode = (int)m;
+    o.fx = v->fx_on ? &v->j.scene.fx : NULL;
+    o.threads = v->threads;
+    return o;
 }
 
-/* Whether k renders the scene's effects (when they are on) in the mode chosen: the library's
- * check, which also turns voxel mode exact into lod for a scene with lod. */
+static retro_mode effective(const view_state *v, retro_mode m)
+{
+    retro_render_opts o = opts_for(v, m);
+    return (retro_mode)retro_render_mode(kernel(v), &o);
+}
+
+/* Whether the effects (when on) are defined on mode m: the library refuses them with
+ * RETRO_EINVAL otherwise. */
+static int fx_mode_ok(const view_state *v, retro_mode m)
+{
+    retro_render_opts o = opts_for(v, m);
+    return retro_render_check(kernel(v), &o, NULL, 0) != RETRO_EINVAL;
+}
+
+/* Whether k renders the scene's effects (when they are on) in the mode chosen. */
 static int renders_fx(const view_state *v, const retro_kernel *k)
 {
-    return !v->fx_on || retro_kernel_check(k, (int)v->mode, &v->j.scene.fx, NULL, 0) != RETRO_EUNSUPPORTED;
+    retro_render_opts o = opts_for(v, v->mode);
+    return !v->fx_on || retro_render_check(k, &o, NULL, 0) != RETRO_EUNSUPPORTED;
 }
 
 int view_open(const char *cmd, const render_opts *o, view_state *v)
@@ -48,15 +68,15 @@ int view_open(const char *cmd, const render_opts *o, view_state *v)
         return CLI_EBADINPUT;
     job_pose(&v->j, &v->o, -1, &v->pose);
     v->kernel = (size_t)(v->j.k - retro_kernels);
-    v->mode = v->j.mode;
-    v->fx_on = v->j.rc.fx != NULL;
+    v->mode = (retro_mode)v->j.opts.mode;
+    v->fx_on = v->j.opts.fx != NULL;
     if (!renders_fx(v, kernel(v))) { /* as retro render refuses it */
         job_close(&v->j);
         return cli_error(cmd, "kernel '%s' cannot render the effects of %s", kernel(v)->name, o->map);
     }
     /* Always an explicit count, so the overlay says what every threaded kernel uses (their
      * defaults differ). */
-    v->threads = o->threads ? (int)o->threads : retro_ctx_threads(&v->j.rc);
+    v->threads = o->threads ? (int)o->threads : retro_ctx_threads(v->j.rc);
     return 0;
 }
 
@@ -113,8 +133,8 @@ void view_next_mode(view_state *v)
     v->status[0] = 0;
     for (int i = 0; i < count; i++) {
         m = (retro_mode)((m + 1) % count);
-        if (is_voxel(v) && v->fx_on && m != RETRO_MODE_EXACT && m != RETRO_MODE_LOD)
-            continue; /* voxel effects need exact or lod */
+        if (!fx_mode_ok(v, m))
+            continue; /* effects are not defined on m (voxel: only exact and lod) */
         if (effective(v, m) != m)
             continue; /* exact would render as lod: no new mode */
         if (retro_kernel_has_mode(kernel(v), m))
@@ -132,8 +152,8 @@ void view_toggle_effects(view_state *v)
     }
     retro_mode old = v->mode;
     v->fx_on = !v->fx_on;
-    if (is_voxel(v) && v->fx_on && v->mode != RETRO_MODE_EXACT && v->mode != RETRO_MODE_LOD)
-        v->mode = RETRO_MODE_EXACT;
+    if (!fx_mode_ok(v, v->mode))
+        v->mode = RETRO_MODE_EXACT; /* the family's first mode: effects are defined there */
     if (!renders_fx(v, kernel(v))) {
         v->fx_on = 0;
         v->mode = old;
@@ -156,11 +176,10 @@ void view_distance(view_state *v, int delta)
 
 int view_render(view_state *v)
 {
-    v->j.rc.fx = v->fx_on ? &v->j.scene.fx : NULL;
-    v->j.rc.threads = v->threads;
-    retro_err e = retro_render(&v->j.rc, kernel(v), v->mode, &v->pose, &v->j.c);
+    retro_render_opts o = opts_for(v, v->mode);
+    retro_err e = retro_render(v->j.rc, kernel(v), &o, &v->pose, &v->j.c);
     if (e) {
-        const char *why = is_voxel(v) ? "" : retro_mesh_last_error(&v->j.rc);
+        const char *why = is_voxel(v) ? "" : retro_mesh_last_error(v->j.rc);
         snprintf(v->status, sizeof v->status, "%s", *why ? why : retro_strerror(e));
         return -1;
     }

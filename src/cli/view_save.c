@@ -48,7 +48,7 @@ static void write_effects(FILE *f, const view_state *v, const char *morph)
     if (on & RETRO_FX_BILINEAR)
         fprintf(f, "[bilinear]\nenabled = yes\n");
     if (on & RETRO_FX_LOD)
-        fprintf(f, "[lod]\nrate = %.9g\n", (double)fx->lod);
+        fprintf(f, "[lod]\nrate = %.9g\n", (double)v->j.scene.lod);
     if (on & RETRO_FX_HORIZON)
         fprintf(f, "[horizon]\npitch = %d\n", fx->pitch);
     if (on & RETRO_FX_MORPH)

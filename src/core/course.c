@@ -9,6 +9,8 @@
 
 #include "render.h"
 #include "retro.h"
+#include "ctx.h"
+#include "frame.h"
 #include "kernels.h"
 #include "retro_internal.h"
 
@@ -48,15 +50,17 @@ void draw_line(ctx_t *c, int u, int v_from, int v_to, uint32_t color)
  * under ASan). The maps may be freed and others loaded at the same addresses between calls,
  * so the caches keyed by map pointer are dropped every call (the course frame keeps none but
  * the map's maximum, recomputed as a fresh context would). A call made while another is
- * rendering (from another thread) or after the exit handler ran uses a context of its own. */
-static retro_ctx course_rc;
+ * rendering (from another thread) or after the exit handler ran uses a context of its own.
+ * The kernel is called directly: the submission has no kernel table. */
+static retro_ctx *course_rc;
 static atomic_flag course_busy = ATOMIC_FLAG_INIT;
-static int course_state; /* 0: not set up, 1: in use, 2: freed at exit */
+static int course_state; /* 0: not set up, 1: in use, 2: freed at exit or never made */
 
 static void course_exit(void)
 {
     if (!atomic_flag_test_and_set(&course_busy)) {
-        retro_ctx_free(&course_rc);
+        retro_ctx_free(course_rc);
+        course_rc = NULL;
         course_state = 2;
         atomic_flag_clear(&course_busy);
     }
@@ -73,20 +77,24 @@ void render(const player_t *p, ctx_t *c)
 {
     if (!atomic_flag_test_and_set(&course_busy)) {
         if (course_state == 0) {
-            retro_ctx_init(&course_rc);
-            course_state = atexit(course_exit) == 0 ? 1 : 2;
+            course_rc = retro_ctx_new();
+            course_state = course_rc && atexit(course_exit) == 0 ? 1 : 2;
+            if (course_state == 2) {
+                retro_ctx_free(course_rc);
+                course_rc = NULL;
+            }
         }
         if (course_state == 1) {
-            render_once(&course_rc, p, c);
+            render_once(course_rc, p, c);
             atomic_flag_clear(&course_busy);
             return;
         }
         atomic_flag_clear(&course_busy);
     }
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    render_once(&rc, p, c);
-    retro_ctx_free(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    if (rc)
+        render_once(rc, p, c);
+    retro_ctx_free(rc);
 }
 
 int bonus_implemented(void)

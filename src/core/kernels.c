@@ -120,18 +120,42 @@ static unsigned fx_flags(const retro_effects *fx)
     return fx ? fx->flags & RETRO_FX_ALL : 0;
 }
 
+/* "exact or lod": the names of the modes in bits, for a refusal. */
+static void mode_list(const retro_family *fam, unsigned bits, char *out, size_t n)
+{
+    size_t used = 0;
+    int left = 0;
+    for (int m = 0; m < fam->mode_count; m++)
+        left += (bits >> m) & 1;
+    out[0] = 0;
+    for (int m = 0; m < fam->mode_count && used < n; m++) {
+        if (!((bits >> m) & 1))
+            continue;
+        left--;
+        int w = snprintf(out + used, n - used, "%s%s", fam->mode_names[m], left > 1 ? ", " : left == 1 ? " or " : "");
+        used += w > 0 ? (size_t)w : 0;
+    }
+}
+
 retro_err retro_kernel_check(const retro_kernel *k, int mode, const retro_effects *fx, char *why, size_t n)
 {
-    char buf[128];
+    char buf[160];
     if (!why) {
         why = buf;
         n = sizeof buf;
     }
     const retro_family *fam = k->family;
-    int m = fam->effective_mode(mode, fx);
-    unsigned missing = fx_flags(fx) & ~k->fx;
     if (mode < 0 || mode >= fam->mode_count) {
         snprintf(why, n, "%s has no mode %d", fam->name, mode);
+        return RETRO_EINVAL;
+    }
+    int m = fam->effective_mode(mode, fx);
+    unsigned asked = fx_flags(fx), missing = asked & ~k->fx, defined = asked & fam->fx;
+    if (defined && fam->fx_modes && !(fam->fx_modes & RETRO_MODE_BIT(m))) {
+        char modes[96];
+        mode_list(fam, fam->fx_modes, modes, sizeof modes);
+        snprintf(why, n, "effects need mode %s, not %s (%s asked for)", modes, retro_family_mode_name(fam, m),
+                 retro_fx_name(defined & -defined));
         return RETRO_EINVAL;
     }
     if (!retro_kernel_has_mode(k, (retro_mode)m)) {
@@ -172,20 +196,4 @@ const retro_kernel *retro_kernel_best_fx(retro_mode mode, const retro_effects *f
 const retro_kernel *retro_kernel_best(retro_mode mode)
 {
     return retro_kernel_best_fx(mode, NULL);
-}
-
-retro_err retro_render(retro_ctx *rc, const retro_kernel *k, int mode, const player_t *p, ctx_t *c)
-{
-    if (!k || !rc)
-        return RETRO_EINVAL;
-    retro_err e = retro_kernel_check(k, mode, rc->fx, NULL, 0);
-    if (e)
-        return e;
-    const void *frame = NULL;
-    e = k->family->setup(rc, k->family->effective_mode(mode, rc->fx), p, c, &frame);
-    if (e)
-        return e;
-    rc->kernel_err = RETRO_OK;
-    k->fn(frame, rc);
-    return rc->kernel_err;
 }

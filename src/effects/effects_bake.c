@@ -1,24 +1,13 @@
 /* Baked effects (docs/EFFECTS.md): morph, shade and water rewrite the maps once per change of
- * their inputs, into maps owned by the render context, so the frame reads ready-made cells and
- * a kernel's inner loop never pays for them. */
+ * their inputs, into maps a context holds (effects_bake.h), so the frame reads ready-made cells
+ * and a kernel's inner loop never pays for them. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "retro_internal.h"
+#include "effects_bake.h"
+#include "retro.h"
 #include "retro_scene.h"
-
-/* Everything a bake depends on; equal keys mean the baked maps are still valid. */
-typedef struct {
-    const uint8_t *h0, *h1;
-    const uint32_t *c0;
-    int S, T;
-    unsigned flags;
-    float sun[3], ambient, diffuse;
-    int level;
-    uint32_t water;
-    float alpha0, alpha_per_unit;
-} bake_key;
 
 static void morph(const uint8_t *h0, const uint8_t *h1, int T, uint8_t *out, size_t n)
 {
@@ -71,9 +60,9 @@ static void water(const retro_effects *fx, uint8_t *h, uint32_t *c, size_t n)
     }
 }
 
-int retro_effects_bake(retro_ctx *rc, const retro_effects *fx, const uint8_t *h0, const uint32_t *c0, int S)
+int retro_effects_bake(retro_fx_bake *b, const retro_effects *fx, const uint8_t *h0, const uint32_t *c0, int S)
 {
-    bake_key key;
+    retro_fx_bake_key key;
     memset(&key, 0, sizeof key);
     key.h0 = h0;
     key.c0 = c0;
@@ -95,36 +84,45 @@ int retro_effects_bake(retro_ctx *rc, const retro_effects *fx, const uint8_t *h0
         key.alpha0 = fx->water_alpha0;
         key.alpha_per_unit = fx->water_alpha_per_unit;
     }
-    if (rc->fx_key && !memcmp(rc->fx_key, &key, sizeof key))
+    if (b->have_key && !memcmp(&b->key, &key, sizeof key))
         return 0;
     size_t n = (size_t)S * (size_t)S;
-    if (n > rc->fx_cap) {
-        uint8_t *h = realloc(rc->fx_height, n);
+    if (n > b->cap) {
+        uint8_t *h = realloc(b->height, n);
         if (h)
-            rc->fx_height = h;
-        uint32_t *c = realloc(rc->fx_color, n * sizeof *c);
+            b->height = h;
+        uint32_t *c = realloc(b->color, n * sizeof *c);
         if (c)
-            rc->fx_color = c;
+            b->color = c;
         if (!h || !c)
             return -1;
-        rc->fx_cap = n;
+        b->cap = n;
     }
-    if (!rc->fx_key && !(rc->fx_key = malloc(sizeof key)))
-        return -1;
     if (key.flags & RETRO_FX_MORPH)
-        morph(h0, key.h1, key.T, rc->fx_height, n);
+        morph(h0, key.h1, key.T, b->height, n);
     else
-        memcpy(rc->fx_height, h0, n);
+        memcpy(b->height, h0, n);
     if (key.flags & RETRO_FX_SHADE)
-        shade(fx, rc->fx_height, c0, rc->fx_color, S);
+        shade(fx, b->height, c0, b->color, S);
     else
-        memcpy(rc->fx_color, c0, n * sizeof *c0);
+        memcpy(b->color, c0, n * sizeof *c0);
     if (key.flags & RETRO_FX_WATER)
-        water(fx, rc->fx_height, rc->fx_color, n);
-    memcpy(rc->fx_key, &key, sizeof key);
-    /* Same pointers, new contents: caches keyed by map pointer must rebuild. */
-    retro_ctx_map_changed(rc);
-    return 0;
+        water(fx, b->height, b->color, n);
+    memcpy(&b->key, &key, sizeof key); /* padding too: compared with memcmp */
+    b->have_key = 1;
+    return 1;
+}
+
+void retro_effects_bake_stale(retro_fx_bake *b)
+{
+    b->have_key = 0;
+}
+
+void retro_effects_bake_free(retro_fx_bake *b)
+{
+    free(b->height);
+    free(b->color);
+    memset(b, 0, sizeof *b);
 }
 
 void retro_fog_table(const retro_effects *fx, uint16_t *fog, int D)
@@ -140,4 +138,30 @@ void retro_fog_table(const retro_effects *fx, uint16_t *fog, int D)
         f = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
         fog[d] = (uint16_t)(int)(f * 256.0f + 0.5f);
     }
+}
+
+static int in(float v, float lo, float hi)
+{
+    return v >= lo && v <= hi; /* false for NaN */
+}
+
+int retro_effects_valid(const retro_effects *fx)
+{
+    unsigned f = fx->flags;
+    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
+                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
+        return 0;
+    if (f & RETRO_FX_SHADE) {
+        float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
+        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
+            return 0;
+    }
+    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
+                                  in(fx->water_alpha_per_unit, 0, 1)))
+        return 0;
+    if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))
+        return 0;
+    if ((f & RETRO_FX_MORPH) && (!fx->morph_height || !in(fx->morph_t, 0, 1)))
+        return 0;
+    return 1;
 }

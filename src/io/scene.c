@@ -69,13 +69,13 @@ void retro_effects_defaults(retro_effects *fx)
     fx->water_color = 0x1e5aa000u;
     fx->water_alpha0 = 0.35f;
     fx->water_alpha_per_unit = 0.03f;
-    fx->lod = RETRO_LOD_DEFAULT;
 }
 
 void retro_scene_defaults(retro_scene *s)
 {
     memset(s, 0, sizeof *s);
     s->sky = 0x66a3ff00u;
+    s->lod = RETRO_LOD_DEFAULT;
     s->x = s->y = NAN;     /* the map's default view */
     s->height = INT_MIN;   /* the default view's height */
     s->W = 640;
@@ -404,9 +404,9 @@ static int on_key(parser *P, int sec, const char *k, const char *v)
         break;
     case SEC_LOD:
         if (KEY("rate")) {
-            if (!FLOAT(0, 100, &fx->lod))
+            if (!FLOAT(0, 100, &s->lod))
                 return 0;
-            return fx->lod > 0 ? 1 : fail(P, "[%s] %s: must be above 0", sn, k);
+            return s->lod > 0 ? 1 : fail(P, "[%s] %s: must be above 0", sn, k);
         }
         break;
     case SEC_HORIZON:

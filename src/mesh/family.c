@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ctx.h"
 #include "mesh_family.h"
 #include "mesh_internal.h"
 

@@ -1,87 +1,21 @@
-/* Frame setup: the formulas of SEMANTICS.md written once. Kernels read only retro_frame. */
+/* Frame setup: the formulas of SEMANTICS.md written once. Kernels read only retro_frame
+ * (frame.h); the context's options (set by retro_render) say which effects, lod rate and
+ * skipping. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "retro.h"
 #include "retro_internal.h"
+#include "ctx.h"
+#include "effects_bake.h"
+#include "frame.h"
+#include "hmax_cache.h"
 #include "kernels.h"
 #include "retro_scene.h"
-#include "pt_pool.h"
 #include "strips.h"
 #ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
 #include "hmax_pyramid.h"
-#include "mesh_family.h"
-#endif
-
-void retro_ctx_init(retro_ctx *rc)
-{
-    memset(rc, 0, sizeof *rc);
-}
-
-void retro_ctx_free(retro_ctx *rc)
-{
-    free(rc->rx);
-    free(rc->ry);
-    free(rc->kd);
-    free(rc->lx);
-    free(rc->ly);
-    free(rc->sx);
-    free(rc->sy);
-    free(rc->vcap);
-    free(rc->ybuf);
-    free(rc->qx);
-    free(rc->qy);
-    free(rc->tscratch);
-    free(rc->rxd);
-    free(rc->ryd);
-    free(rc->kdd);
-    free(rc->rx_fx);
-    free(rc->ry_fx);
-    free(rc->kd_fx);
-    free(rc->dist);
-    free(rc->fx_height);
-    free(rc->fx_color);
-    free(rc->fx_key);
-    free(rc->fog);
-    free(rc->simd_cells);
-    retro_pt_pool_free(rc->pt_pool);
-#ifndef RETRO_SUBMISSION /* the submission has no hwloc pool */
-    retro_pool_free(rc);
-    retro_mesh_state_free(rc->mesh);
-    if (rc->pyr)
-        retro_pyramid_free(rc->pyr);
-    free(rc->pyr);
-#endif
-    memset(rc, 0, sizeof *rc);
-}
-
-void retro_ctx_map_changed(retro_ctx *rc)
-{
-    rc->hmax_map = NULL;
-    rc->simd_height_map = NULL;
-#ifndef RETRO_SUBMISSION
-    if (rc->pyr)
-        retro_pyramid_stale(rc->pyr);
-#endif
-}
-
-#ifndef RETRO_SUBMISSION
-/* The pyramid for a frame of mode exact or lod that may skip: built when the map is new; NULL when
- * skipping is off, the map too small to have levels, or the memory short (-1). */
-static int skip_pyramid(retro_ctx *rc, const uint8_t *hm, int S, const struct retro_pyramid **out)
-{
-    *out = NULL;
-    if (rc->no_skip)
-        return 0;
-    if (!rc->pyr && !(rc->pyr = calloc(1, sizeof *rc->pyr)))
-        return -1;
-    if (retro_pyramid_build(rc->pyr, hm, S))
-        return -1;
-    if (rc->pyr->lmax >= RETRO_PYR_LMIN)
-        *out = rc->pyr;
-    return 0;
-}
 #endif
 
 /* Grows a buffer to n elements; memory only ever grows so steady-state frames never allocate. */
@@ -117,14 +51,6 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
         rc->cap_d = d;
     }
     return RETRO_OK;
-}
-
-static int map_max(const uint8_t *h, size_t n)
-{
-    uint8_t m = 0;
-    for (size_t i = 0; i < n; i++)
-        m = h[i] > m ? h[i] : m;
-    return m;
 }
 
 float retro_float_mod(float f, float k)
@@ -227,12 +153,12 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle, const retro_ef
         return;
     }
     /* dist[1..ndist-1] are the sample distances; entry ndist closes vcap. */
-    double lambda = (flags & RETRO_FX_LOD) ? fx->lod : rc->lod > 0 ? rc->lod : RETRO_LOD_DEFAULT;
+    double lambda = rc->lod > 0 ? rc->lod : RETRO_LOD_DEFAULT;
     int n = 1;
     for (int64_t d = 1; d < f->D; n++) {
         rc->dist[n] = (int)d;
-        /* Compared in double before converting: a huge or infinite lambda (rc->lod is public)
-         * would overflow int64_t, and a NaN one has no step; D ends the walk either way. */
+        /* Compared in double before converting: a huge lambda would overflow int64_t, and a
+         * NaN one has no step (both refused before setup); D ends the walk either way. */
         double step = floor((double)d * lambda);
         d += step > 1 && step < (double)f->D ? (int64_t)step : step >= (double)f->D ? f->D : 1;
     }
@@ -294,36 +220,6 @@ static void setup_course(retro_ctx *rc, retro_frame *f, const player_t *p)
     cap_rows(rc, f->D, row_course);
 }
 
-static int in(float v, float lo, float hi)
-{
-    return v >= lo && v <= hi; /* false for NaN */
-}
-
-/* The ranges docs/EFFECTS.md gives (the scene parser enforces the same): outside them a
- * float-to-int conversion in the bake or the fog table could overflow. */
-static int effects_valid(const retro_effects *fx)
-{
-    unsigned f = fx->flags;
-    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
-                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
-        return 0;
-    if (f & RETRO_FX_SHADE) {
-        float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
-        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
-            return 0;
-    }
-    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
-                                  in(fx->water_alpha_per_unit, 0, 1)))
-        return 0;
-    if ((f & RETRO_FX_LOD) && !in(fx->lod, 1e-30f, 100))
-        return 0;
-    if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))
-        return 0;
-    if ((f & RETRO_FX_MORPH) && (!fx->morph_height || !in(fx->morph_t, 0, 1)))
-        return 0;
-    return 1;
-}
-
 retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, const ctx_t *c)
 {
     if (!rc || !p || !c || !c->height_map || !c->color_map || !c->out)
@@ -338,32 +234,29 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         return RETRO_EINVAL;
     if (c->distance > RETRO_MAX_DISTANCE || !isfinite(p->x) || !isfinite(p->y))
         return RETRO_EINVAL;
-    if (mode == RETRO_MODE_LOD && !in(rc->lod, 0, 100)) /* 0: the default */
-        return RETRO_EINVAL;
     int D = c->distance < 1 ? 1 : c->distance;
     retro_err e = reserve(rc, W, D);
     if (e)
         return e;
 
     const retro_effects *fx = rc->fx;
+    /* Which effects a mode takes is decided by retro_kernel_check (effects are defined on
+     * modes exact and lod); here only their parameters are checked. */
     unsigned flags = fx ? fx->flags & RETRO_FX_VOXEL : 0;
-    if (flags && mode != RETRO_MODE_EXACT && mode != RETRO_MODE_LOD)
-        return RETRO_EINVAL; /* effects are defined on modes exact and lod */
-    if (flags && !effects_valid(fx))
+    if (flags && !retro_effects_valid(fx))
         return RETRO_EINVAL;
     const uint8_t *hm = c->height_map;
     const uint32_t *cm = c->color_map;
     if (flags & (RETRO_FX_MORPH | RETRO_FX_SHADE | RETRO_FX_WATER)) {
-        if (retro_effects_bake(rc, fx, hm, cm, S))
+        int baked = retro_effects_bake(&rc->bake, fx, hm, cm, S);
+        if (baked < 0)
             return RETRO_ENOMEM;
-        hm = rc->fx_height;
-        cm = rc->fx_color;
+        if (baked)
+            retro_ctx_maps_rewritten(rc);
+        hm = rc->bake.height;
+        cm = rc->bake.color;
     }
-    if (rc->hmax_map != hm || rc->hmax_size != S) {
-        rc->hmax_value = map_max(hm, (size_t)S * (size_t)S);
-        rc->hmax_map = hm;
-        rc->hmax_size = S;
-    }
+    int hmax = retro_hmax_get(&rc->hmax, hm, S);
 
     retro_frame *f = &rc->frame;
     memset(f, 0, sizeof *f);
@@ -380,7 +273,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->out = c->out;
     f->height = p->height;
     /* A bilinear height exceeds the maximum by rounding at most: the bound takes one more. */
-    f->hmax = rc->hmax_value + ((flags & RETRO_FX_BILINEAR) ? 1 : 0);
+    f->hmax = hmax + ((flags & RETRO_FX_BILINEAR) ? 1 : 0);
     f->x0 = (float)wrap(p->x, S);
     f->y0 = (float)wrap(p->y, S);
     f->rx = rc->rx;
@@ -398,6 +291,8 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->ry_fx = rc->ry_fx;
     f->kd_fx = rc->kd_fx;
     f->dist = rc->dist;
+    rc->packed.offered = 0; /* until a threaded kernel offers it for this frame */
+    f->packed = &rc->packed;
     switch (mode) {
     case RETRO_MODE_COURSE: setup_course(rc, f, p); break;
     case RETRO_MODE_TRUTH: setup_truth(rc, f, p); cap_rows(rc, f->D, row_truth); break;
@@ -406,38 +301,12 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     }
     f->simd_skip = 0;
 #ifndef RETRO_SUBMISSION
-    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && skip_pyramid(rc, hm, S, &f->pyr))
+    /* occlusion skipping (docs/SKIPPING.md) in modes exact and lod, unless switched off */
+    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && !rc->no_skip &&
+        retro_pyramid_get(&rc->pyr, hm, S, &f->pyr))
         return RETRO_ENOMEM;
     f->simd_skip = f->pyr && rc->simd_skip;
 #endif
     f->strip = retro_strip_best(mode, f->fx); /* once per frame, for the threaded kernels */
     return RETRO_OK;
-}
-
-const char *const retro_voxel_mode_names[RETRO_MODE_COUNT] = {"exact", "course", "truth", "fixed", "lod"};
-
-const char *retro_mode_name(retro_mode mode)
-{
-    return (unsigned)mode < RETRO_MODE_COUNT ? retro_voxel_mode_names[mode] : "?";
-}
-
-int retro_mode_parse(const char *name, retro_mode *mode)
-{
-    for (int m = 0; m < RETRO_MODE_COUNT; m++)
-        if (!strcmp(name, retro_voxel_mode_names[m])) {
-            *mode = (retro_mode)m;
-            return 0;
-        }
-    return -1;
-}
-
-const char *retro_strerror(retro_err e)
-{
-    switch (e) {
-    case RETRO_OK: return "ok";
-    case RETRO_EINVAL: return "input outside the valid domain";
-    case RETRO_ENOMEM: return "out of memory";
-    case RETRO_EUNSUPPORTED: return "kernel does not support this mode or CPU";
-    }
-    return "unknown error";
 }

@@ -137,3 +137,15 @@ int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S)
     p->map = h;
     return 0;
 }
+
+int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, const retro_pyramid **out)
+{
+    *out = NULL;
+    if (!*slot && !(*slot = calloc(1, sizeof **slot)))
+        return -1;
+    if (retro_pyramid_build(*slot, h, S))
+        return -1;
+    if ((*slot)->lmax >= RETRO_PYR_LMIN)
+        *out = *slot;
+    return 0;
+}

@@ -53,6 +53,10 @@ int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S);
 void retro_pyramid_free(retro_pyramid *p);
 /* Forgets which map p was built from, so the next build recomputes it. */
 void retro_pyramid_stale(retro_pyramid *p);
+/* A context's pyramid (retro_ctx.pyr, allocated into *slot on first use) made the pyramid of
+ * map h (S x S); *out is it, or NULL when the map is too small to have levels. Returns 0, or
+ * -1 when out of memory (*out NULL). */
+int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, const retro_pyramid **out);
 
 /* Counts of the counting build of the ybuffer kernel (retro_kernel_ybuffer_counted, in
  * the library as an object of kernel_ybuffer.c compiled with RETRO_COUNT_SAMPLES). Global and

@@ -3,6 +3,8 @@
 #define RETRO_KERNELS_H
 
 #include "retro.h"
+#include "ctx.h"
+#include "frame.h"
 
 /* Course-mode accumulators at column 1: qx[d] = lx[d], qy[d] = ly[d]. */
 void retro_course_start(const retro_frame *f, float *qx, float *qy);
@@ -15,8 +17,9 @@ void retro_strip_simd_sse2(const retro_frame *f, float *qx, float *qy, int u0, i
 void retro_strip_simd_avx2(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 void retro_strip_simd_avx512(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 
-/* Builds rc's packed map when stale and offers it to strips through rc->frame.packed (NULL
- * when the frame cannot use it): threaded kernels call it before their threads start. */
+/* Builds rc's packed map when stale and offers it to the strips of rc's frame (they find it
+ * through frame.packed; not when the frame cannot use it): threaded kernels call it before
+ * their threads start. Writes the context, never the frame. */
 void retro_simd_offer_packed(retro_ctx *rc);
 
 void retro_kernel_naive(const void *frame, retro_ctx *rc);

@@ -8,6 +8,8 @@
 #include <stdint.h>
 
 #include "retro.h"
+#include "ctx.h"
+#include "frame.h"
 
 /* Helpers below are static inline in a header; in the single-file submission they become part
  * of one .c file, where clang would warn about the ones it does not call. */
@@ -15,13 +17,6 @@
 
 /* The course's float_mod. */
 float retro_float_mod(float f, float k);
-struct retro_effects;
-/* Bakes morph, shade and water into rc->fx_height/fx_color unless they are current; -1 when
- * out of memory. */
-int retro_effects_bake(retro_ctx *rc, const struct retro_effects *fx, const uint8_t *h0,
-                       const uint32_t *c0, int S);
-/* Fog weights F_d (0..256) for d = 1..D-1. */
-void retro_fog_table(const struct retro_effects *fx, uint16_t *fog, int D);
 /* Releases the thread pool of parallel kernels, if any. */
 void retro_pool_free(retro_ctx *rc);
 

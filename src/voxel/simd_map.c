@@ -3,25 +3,28 @@
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "simd_common.h"
+#include "simd_map.h"
+#include "ctx.h"
 #include "retro_scene.h"
 
-/* Packs the maps into rc->simd_cells; returns 0 if a colour has a non-zero low byte (the
- * packing would lose it) or memory is short. */
-static int pack_maps(const retro_frame *f, retro_ctx *rc)
+/* Packs the maps into pm->cells; returns 0 if a colour has a non-zero low byte (the packing
+ * would lose it) or memory is short. */
+static int pack_maps(const retro_frame *f, retro_packed_map *pm)
 {
     size_t S = (size_t)f->S, T = (S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
     size_t n = T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE;
-    if (n > rc->simd_cells_cap) {
+    if (n > pm->cap) {
         /* The old cells are not worth copying, so free first: the peak stays one packed map. */
-        free(rc->simd_cells);
-        rc->simd_cells_cap = 0;
+        free(pm->cells);
+        pm->cap = 0;
         /* Whole tiles on whole cache lines: n * 4 bytes is a multiple of 64. */
-        rc->simd_cells = aligned_alloc(64, n * sizeof *rc->simd_cells);
-        if (!rc->simd_cells)
+        pm->cells = aligned_alloc(64, n * sizeof *pm->cells);
+        if (!pm->cells)
             return 0;
-        rc->simd_cells_cap = n;
+        pm->cap = n;
     }
     const uint8_t *h = f->height_map;
     const uint32_t *c = f->color_map;
@@ -29,7 +32,7 @@ static int pack_maps(const retro_frame *f, retro_ctx *rc)
     for (size_t j = 0; j < S; j++) {
         for (size_t i = 0; i < S; i++) {
             low |= c[j * S + i];
-            rc->simd_cells[retro_simd_tiled(i, j, T)] = c[j * S + i] | h[j * S + i];
+            pm->cells[retro_simd_tiled(i, j, T)] = c[j * S + i] | h[j * S + i];
         }
     }
     return (low & RETRO_SIMD_HEIGHT_MASK) == 0;
@@ -63,7 +66,9 @@ int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
         return 0;
     if (f->mode == RETRO_MODE_COURSE && !course_in_bound(f))
         return 0;
-    sf->cells = f->packed;
+    /* the packed map only where a threaded kernel offered it for this frame */
+    const retro_packed_map *pm = f->packed;
+    sf->cells = pm && pm->offered && pm->ok ? pm->cells : NULL;
     sf->tiles = (f->S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
     sf->height = (int32_t)f->height;
     sf->pow2_mask = (f->S & (f->S - 1)) == 0 ? f->S - 1 : -1;
@@ -74,25 +79,42 @@ int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
     return 1;
 }
 
-void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf)
+/* Packs f's maps into pm unless it holds them already; whether the packing is usable. */
+static int pack_current(const retro_frame *f, retro_packed_map *pm)
 {
-    if (rc->simd_height_map != f->height_map || rc->simd_color_map != f->color_map ||
-        rc->simd_map_size != f->S) {
-        rc->simd_cells_ok = pack_maps(f, rc);
-        rc->simd_height_map = f->height_map;
-        rc->simd_color_map = f->color_map;
-        rc->simd_map_size = f->S;
+    if (pm->height_map != f->height_map || pm->color_map != f->color_map || pm->size != f->S) {
+        pm->ok = pack_maps(f, pm);
+        pm->height_map = f->height_map;
+        pm->color_map = f->color_map;
+        pm->size = f->S;
     }
-    sf->cells = rc->simd_cells_ok ? rc->simd_cells : NULL;
+    return pm->ok;
 }
 
+void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf)
+{
+    sf->cells = pack_current(f, &rc->packed) ? rc->packed.cells : NULL;
+}
+
+/* The frame is not written: strips find the offer through f->packed, which frame setup
+ * points at rc->packed with offered cleared. */
 void retro_simd_offer_packed(retro_ctx *rc)
 {
-    retro_frame *f = &rc->frame;
+    const retro_frame *f = &rc->frame;
     retro_simd_frame sf;
-    f->packed = NULL;
+    rc->packed.offered = 0;
     if (!retro_simd_check(f, &sf))
         return;
-    retro_simd_use_packed(f, rc, &sf);
-    f->packed = sf.cells;
+    rc->packed.offered = pack_current(f, &rc->packed);
+}
+
+void retro_packed_map_stale(retro_packed_map *pm)
+{
+    pm->height_map = NULL;
+}
+
+void retro_packed_map_free(retro_packed_map *pm)
+{
+    free(pm->cells);
+    memset(pm, 0, sizeof *pm);
 }

@@ -27,7 +27,7 @@ static char path[64];
 static uint8_t heights[S * S], morph[S * S];
 static uint32_t colours[S * S];
 static uint32_t ref[MAX_W * MAX_H], out[MAX_W * MAX_H];
-static retro_ctx ctxs[MAX_KERNELS];
+static retro_ctx *ctxs[MAX_KERNELS];
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerInitialize(int *argc, char ***argv)
@@ -48,7 +48,8 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         colours[i] = (uint32_t)(z >> 8) & 0xffffff00u;
     }
     for (int k = 0; k < MAX_KERNELS; k++)
-        retro_ctx_init(&ctxs[k]);
+        if (!(ctxs[k] = retro_ctx_new()))
+            abort();
     return 0;
 }
 
@@ -56,12 +57,11 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 static retro_err render_with(const retro_kernel *k, const retro_effects *fx, float lod, const player_t *p,
                              ctx_t *c)
 {
-    retro_ctx *rc = &ctxs[k - retro_kernels];
-    rc->fx = fx;
-    rc->lod = lod;
-    retro_err e = retro_render(rc, k, 0, p, c);
-    rc->fx = NULL;
-    return e;
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = 0;
+    o.fx = fx;
+    o.lod = lod;
+    return retro_render(ctxs[k - retro_kernels], k, &o, p, c);
 }
 
 static void render_pose(retro_scene *s, int frame)
@@ -80,7 +80,7 @@ static void render_pose(retro_scene *s, int frame)
     int W = s->W < MAX_W ? s->W : MAX_W, H = s->H < MAX_H ? s->H : MAX_H;
     int D = s->D < MAX_D ? s->D : MAX_D;
     ctx_t c = {W, H, S, D, s->sky, heights, colours, ref};
-    float lod = s->fx.flags & RETRO_FX_LOD ? s->fx.lod : 0.0f;
+    float lod = s->lod;
     size_t npx = (size_t)W * (size_t)H;
     /* Each family's kernels against that family's reference, in the family's first mode (voxel
      * exact, mesh binary32); a family whose reference refuses the scene's effects is skipped. */

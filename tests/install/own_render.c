@@ -5,11 +5,13 @@
 
 void render(const player_t *p, ctx_t *c)
 {
-    retro_ctx rc;
-    retro_ctx_init(&rc);
-    if (retro_render(&rc, retro_kernel_best(RETRO_MODE_EXACT), RETRO_MODE_EXACT, p, c) != RETRO_OK)
-        fprintf(stderr, "render failed\n");
-    retro_ctx_free(&rc);
+    retro_ctx *rc = retro_ctx_new();
+    retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT; /* mode exact, no effects */
+    char why[160];
+    const retro_kernel *k = retro_family_best(&retro_family_voxel, o.mode, o.fx);
+    if (!rc || retro_render_check(k, &o, why, sizeof why) != RETRO_OK || retro_render(rc, k, &o, p, c) != RETRO_OK)
+        fprintf(stderr, "render failed: %s\n", rc ? why : "out of memory");
+    retro_ctx_free(rc);
 }
 
 int main(void)

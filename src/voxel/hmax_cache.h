@@ -1,0 +1,20 @@
+/* The height map's maximum, cached per map: every mode's early exits and row caps need it,
+ * and scanning S*S cells per frame would cost more than many frames' work. */
+#ifndef RETRO_HMAX_CACHE_H
+#define RETRO_HMAX_CACHE_H
+
+#include <stdint.h>
+
+/* One context's cache (retro_ctx.hmax). All zero is empty. */
+typedef struct retro_hmax_cache {
+    const uint8_t *map; /* the map whose maximum value holds, or NULL */
+    int size;
+    int value;
+} retro_hmax_cache;
+
+/* The maximum of map (S*S cells), scanned only when map or S differ from the last call. */
+int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S);
+/* The next call scans again (the map was edited in place). */
+void retro_hmax_stale(retro_hmax_cache *hc);
+
+#endif
