@@ -77,9 +77,10 @@ void make_map(retro_map *m, int S)
     paint_cells(m);
 }
 
-/* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares. */
+/* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares; lod is
+ * mode lod's rate (retro_render_opts.lod), 0 for the default. */
 static void check_one(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
-                      const retro_effects *fx)
+                      const retro_effects *fx, float lod)
 {
     size_t n = (size_t)W * (size_t)H;
     if (n > g->cap) {
@@ -92,6 +93,7 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
     const retro_kernel *naive = retro_kernel_find("naive"), *yb = retro_kernel_find("ybuffer");
     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
     o.fx = fx;
+    o.lod = lod;
     cr_assert_eq(retro_render(g->rc[NAIVE], naive, &o, &p, &c), RETRO_OK, "%s", what);
     for (int k = SKIP; k <= NOSKIP; k++) {
         c.out = g->out;
@@ -117,6 +119,7 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
     for (int k = 0; k < NSIMD; k++) {
         report_ctx rep = {&g->chk[k], what, 0, 0, ""};
         int bad = 0;
+        g->chk[k].lod = lod;
         cr_assert_eq(retro_check_frame(&g->chk[k], RETRO_MODE_EXACT, fx, &p, &c, report, &rep, &bad), RETRO_OK,
                      "%s", what);
         cr_assert_eq(bad, 0, "%s: S %d, (%.9g, %.9g), angle %d, height %d, %dx%d, D %d: %s", what, m->size,
@@ -136,18 +139,18 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
 void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
            const retro_effects *fx)
 {
-    check_one(g, what, m, p, W, H, D, fx);
+    check_one(g, what, m, p, W, H, D, fx, 0);
     static const float rates[] = {0.02f, 0.3f, 0.001f};
+    const float rate = rates[g->frames % 3];
     retro_effects lod;
     if (fx)
         lod = *fx;
     else
         memset(&lod, 0, sizeof lod);
     lod.flags |= RETRO_FX_LOD;
-    lod.lod = rates[g->frames % 3];
     char label[160];
-    snprintf(label, sizeof label, "%s (mode lod %g)", what, (double)lod.lod);
-    check_one(g, label, m, p, W, H, D, &lod);
+    snprintf(label, sizeof label, "%s (mode lod %g)", what, (double)rate);
+    check_one(g, label, m, p, W, H, D, &lod, rate);
 }
 
 player_t at(float x, float y, int angle, int height)

@@ -206,8 +206,8 @@ Test(skipping, probe_bound_lod)
         for (int k = 0; k < 3; k++)
             m.height[rng_next(&st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
         uint32_t out[1];
-        retro_ctx rc;
-        retro_ctx_init(&rc);
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
         for (int frame = 0; frame < 60; frame++) {
             int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
             int D = 2 + (int)(rng_next(&st) % (unsigned)(8 * S));
@@ -215,9 +215,11 @@ Test(skipping, probe_bound_lod)
             float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
             player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
             ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
-            rc.lod = rates[frame % 4];
-            cr_assert_eq(retro_frame_setup(&rc, RETRO_MODE_LOD, &p, &c), RETRO_OK);
-            const retro_frame *f = &rc.frame;
+            retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+            o.mode = RETRO_MODE_LOD;
+            o.lod = rates[frame % 4];
+            const retro_frame *f = NULL;
+            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
             cr_assert_not_null(f->pyr);
             if (f->ndist < 2)
                 continue;
@@ -244,12 +246,12 @@ Test(skipping, probe_bound_lod)
                         v = retro_exact_row(f->kd[dd], f->half_h, H, f->height_map[idx] - f->height);
                     }
                     cr_assert_leq(v, yb, "S %d lod %g: column %d skipped sample %d (distance %d) with row %d above %d",
-                                  S, (double)rc.lod, u, k, dd, v, yb);
+                                  S, (double)o.lod, u, k, dd, v, yb);
                 }
                 skipped += e - n;
             }
         }
-        retro_ctx_free(&rc);
+        retro_ctx_free(rc);
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld samples)", skipped);

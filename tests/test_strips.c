@@ -120,14 +120,17 @@ Test(strips, frame_setup_chooses_the_strip)
             for (int withfog = 0; withfog < 2; withfog++) {
                 if (withfog && m2 != RETRO_MODE_EXACT)
                     continue;
-                retro_ctx rc;
-                retro_ctx_init(&rc);
-                rc.fx = withfog ? &fog : NULL;
-                cr_assert_eq(retro_frame_setup(&rc, (retro_mode)m2, &p, &c), RETRO_OK);
-                cr_assert(rc.frame.strip == retro_strip_best((retro_mode)m2, rc.frame.fx), "level %s mode %d",
+                retro_ctx *rc = retro_ctx_new();
+                cr_assert(rc);
+                retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+                o.mode = m2;
+                o.fx = withfog ? &fog : NULL;
+                const retro_frame *f = NULL;
+                cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
+                cr_assert(f->strip == retro_strip_best((retro_mode)m2, f->fx), "level %s mode %d",
                           retro_isa_names[l], m2);
-                cr_assert_eq(rc.frame.fx, withfog ? (unsigned)RETRO_FX_FOG : 0u);
-                retro_ctx_free(&rc);
+                cr_assert_eq(f->fx, withfog ? (unsigned)RETRO_FX_FOG : 0u);
+                retro_ctx_free(rc);
             }
     }
     retro_cpu_limit(NULL);
