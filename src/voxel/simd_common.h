@@ -69,6 +69,12 @@ typedef int retro_simd_grp;
  * 16 lines). Cell (i, j) is at retro_simd_tiled(i, j, T) with T = ceil(S / 4) tiles a row; the
  * padding cells of a partial tile are never read. */
 #define RETRO_SIMD_TILE 4
+/* The packed buffer holds the tiled cells, then (but in the submission) the tiled quads. */
+#ifdef RETRO_SUBMISSION
+#define RETRO_SIMD_REGIONS 1
+#else
+#define RETRO_SIMD_REGIONS 2
+#endif
 
 static inline size_t retro_simd_tiled(size_t i, size_t j, size_t tiles)
 {
@@ -80,6 +86,9 @@ static inline size_t retro_simd_tiled(size_t i, size_t j, size_t tiles)
 typedef struct retro_simd_frame {
     const uint32_t *cells; /* the tiled packed map (colour | height per cell), or NULL: read
                             * height_map and color_map (row-major) one lane at a time */
+    const uint32_t *quads; /* with cells: per cell (i, j), tiled alike, the heights of (i, j),
+                            * (i+1, j), (i, j+1), (i+1, j+1) (wrapped) in bytes 0..3: a bilinear
+                            * sample's four heights in one load; NULL in the submission */
     int tiles;             /* T: tiles per row of the packed map */
     int32_t height;        /* camera height: h - height fits in int32 for every h in 0..255 */
     int pow2_mask;         /* S - 1 when S is a power of two (wrap by masking), else -1 */

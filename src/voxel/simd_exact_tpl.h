@@ -87,14 +87,14 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
 #if SIMD_ROW_STORES
             /* Lanes that do not rise must not widen the rows. */
             int lo = v_min_where(up, y) + 1, hi = v_max_where(up, v);
-            simd_i32 c = SIMD_NAME(colours)(f, &s_d, up, packed, bilinear);
+            simd_i32 c = SIMD_NAME(colours)(f, sf, k, &s_d, up, packed, bilinear);
             SIMD_NAME(paint_rows)(f, u0, lo, hi, y, v, fog ? SIMD_NAME(fog_colours)(c, f->fog[d], f->sky) : c);
 #else
             int ys[SIMD_LANES], vs[SIMD_LANES];
             uint32_t cs[SIMD_LANES];
             v_store_i(ys, y);
             v_store_i(vs, v);
-            v_store_i((int *)cs, bilinear ? SIMD_NAME(colours)(f, &s_d, up, packed, 1) : s_d.at[0]);
+            v_store_i((int *)cs, bilinear ? SIMD_NAME(colours)(f, sf, k, &s_d, up, packed, 1) : s_d.at[0]);
             for (unsigned m = v_bits(up); m; m &= m - 1) {
                 int l = __builtin_ctz(m);
                 uint32_t c = bilinear ? cs[l] : SIMD_NAME(colour_of)(f, cs[l], packed);

@@ -15,7 +15,7 @@
 static int pack_maps(const retro_frame *f, retro_packed_map *pm)
 {
     size_t S = (size_t)f->S, T = (S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
-    size_t n = T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE;
+    size_t n = T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE * RETRO_SIMD_REGIONS;
     if (n > pm->cap) {
         /* The old cells are not worth copying, so free first: the peak stays one packed map. */
         free(pm->cells);
@@ -35,7 +35,31 @@ static int pack_maps(const retro_frame *f, retro_packed_map *pm)
             pm->cells[retro_simd_tiled(i, j, T)] = c[j * S + i] | h[j * S + i];
         }
     }
+#ifndef RETRO_SUBMISSION
+    uint32_t *quads = pm->cells + T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE;
+    for (size_t j = 0; j < S; j++) {
+        const size_t j1 = j + 1 == S ? 0 : j + 1;
+        for (size_t i = 0; i < S; i++) {
+            const size_t i1 = i + 1 == S ? 0 : i + 1;
+            quads[retro_simd_tiled(i, j, T)] = (uint32_t)h[j * S + i] | (uint32_t)h[j * S + i1] << 8 |
+                                               (uint32_t)h[j1 * S + i] << 16 | (uint32_t)h[j1 * S + i1] << 24;
+        }
+    }
+#endif
     return (low & RETRO_SIMD_HEIGHT_MASK) == 0;
+}
+
+/* The quad map after the packed cells (RETRO_SIMD_REGIONS), or NULL. */
+static const uint32_t *quads_of(const uint32_t *cells, int S)
+{
+#ifdef RETRO_SUBMISSION
+    (void)cells;
+    (void)S;
+    return NULL;
+#else
+    size_t T = ((size_t)S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
+    return cells ? cells + T * T * RETRO_SIMD_TILE * RETRO_SIMD_TILE : NULL;
+#endif
 }
 
 /* Every accumulator of mode course stays below 2^23 in magnitude: each line starts and ends
@@ -69,6 +93,7 @@ int retro_simd_check(const retro_frame *f, retro_simd_frame *sf)
     /* the packed map only where a threaded kernel offered it for this frame */
     const retro_packed_map *pm = f->packed;
     sf->cells = pm && pm->offered && pm->ok ? pm->cells : NULL;
+    sf->quads = quads_of(sf->cells, f->S);
     sf->tiles = (f->S + RETRO_SIMD_TILE - 1) / RETRO_SIMD_TILE;
     sf->height = (int32_t)f->height;
     sf->pow2_mask = (f->S & (f->S - 1)) == 0 ? f->S - 1 : -1;
@@ -94,6 +119,7 @@ static int pack_current(const retro_frame *f, retro_packed_map *pm)
 void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf)
 {
     sf->cells = pack_current(f, &rc->packed) ? rc->packed.cells : NULL;
+    sf->quads = quads_of(sf->cells, f->S);
 }
 
 /* The frame is not written: strips find the offer through f->packed, which frame setup

@@ -76,17 +76,23 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(co
     return v_cvtt_i(v_keep_f(v_flt(r, K), r));
 }
 
+/* The index of cell (i, j) in the tiled maps (simd_common.h's retro_simd_tiled). */
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(tiled)(const SIMD_NAME(consts) *k, simd_i32 i, simd_i32 j)
+{
+    const simd_i32 low = v_set1_i(RETRO_SIMD_TILE - 1);
+    simd_i32 tile = v_add_i(v_mullo_i(v_srli_i(j, 2), k->tiles), v_srli_i(i, 2));
+    simd_i32 within = v_or_i(v_slli_i(v_and_i(j, low), 2), v_and_i(i, low));
+    return v_or_i(v_slli_i(tile, 4), within);
+}
+
 /* The heights of cells (i, j). *at receives what the colours need: the packed cell itself, or
  * the row-major index when the maps are read directly. */
 RETRO_SIMD_INLINE simd_i32 SIMD_NAME(heights)(const retro_frame *f, const retro_simd_frame *sf,
-                                          const SIMD_NAME(consts) *k, simd_i32 i, simd_i32 j, simd_i32 *at,
-                                          const int packed)
+                                              const SIMD_NAME(consts) *k, simd_i32 i, simd_i32 j, simd_i32 *at,
+                                              const int packed)
 {
     if (packed) {
-        const simd_i32 low = v_set1_i(RETRO_SIMD_TILE - 1);
-        simd_i32 tile = v_add_i(v_mullo_i(v_srli_i(j, 2), k->tiles), v_srli_i(i, 2));
-        simd_i32 within = v_or_i(v_slli_i(v_and_i(j, low), 2), v_and_i(i, low));
-        *at = v_gather_cells(sf->cells, v_or_i(v_slli_i(tile, 4), within));
+        *at = v_gather_cells(sf->cells, SIMD_NAME(tiled)(k, i, j));
         return v_and_i(*at, v_set1_i(RETRO_SIMD_HEIGHT_MASK));
     }
     *at = v_add_i(v_mullo_i(j, k->S), i);
@@ -118,7 +124,8 @@ typedef struct {
     simd_i32 h;      /* the cells' heights (bilinear: unused) */
     simd_f32 dh;     /* bilinear: the filtered height minus the camera's, rounded once */
     simd_i32 at[4];  /* what the colours need: the packed cells or their row-major indices
-                      * (bilinear: the four corners, docs/EFFECTS.md's order; else at[0]) */
+                      * (bilinear: the four corners, docs/EFFECTS.md's order; else at[0];
+                      * bilinear from quads: i0, i1, j0, j1) */
     simd_f32 tx, ty; /* bilinear: the weights */
 } SIMD_NAME(sample_t);
 
@@ -147,10 +154,24 @@ SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_N
     j1 = v_keep_i(v_igt(k->S, j1), j1);
     s->tx = v_sub_f(px, v_floor_f(px));
     s->ty = v_sub_f(py, v_floor_f(py));
-    simd_f32 h00 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j0, &s->at[0], packed));
-    simd_f32 h10 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j0, &s->at[1], packed));
-    simd_f32 h01 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j1, &s->at[2], packed));
-    simd_f32 h11 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j1, &s->at[3], packed));
+    simd_f32 h00, h10, h01, h11;
+    if (packed && sf->quads) { /* one load for the four heights; colours when painting */
+        const simd_i32 byte = v_set1_i(0xff);
+        simd_i32 q = v_gather_cells(sf->quads, SIMD_NAME(tiled)(k, i0, j0));
+        h00 = v_cvt_f(v_and_i(q, byte));
+        h10 = v_cvt_f(v_and_i(v_srli_i(q, 8), byte));
+        h01 = v_cvt_f(v_and_i(v_srli_i(q, 16), byte));
+        h11 = v_cvt_f(v_srli_i(q, 24));
+        s->at[0] = i0;
+        s->at[1] = i1;
+        s->at[2] = j0;
+        s->at[3] = j1;
+    } else {
+        h00 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j0, &s->at[0], packed));
+        h10 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j0, &s->at[1], packed));
+        h01 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i0, j1, &s->at[2], packed));
+        h11 = v_cvt_f(SIMD_NAME(heights)(f, sf, k, i1, j1, &s->at[3], packed));
+    }
     simd_f32 wx = v_sub_f(one, s->tx), wy = v_sub_f(one, s->ty);
     simd_f32 hf = v_add_f(v_mul_f(v_add_f(v_mul_f(h00, wx), v_mul_f(h10, s->tx)), wy),
                           v_mul_f(v_add_f(v_mul_f(h01, wx), v_mul_f(h11, s->tx)), s->ty));
@@ -180,16 +201,23 @@ static inline simd_i32 SIMD_NAME(bilerp_channel)(simd_i32 c00, simd_i32 c10, sim
 }
 
 /* The colours of the lanes in m (bilinear: filtered per channel, docs/EFFECTS.md). */
-RETRO_SIMD_INLINE simd_i32 SIMD_NAME(colours)(const retro_frame *f, const SIMD_NAME(sample_t) *s, simd_mask m,
-                                          const int packed, const int bilinear)
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(colours)(const retro_frame *f, const retro_simd_frame *sf,
+                                              const SIMD_NAME(consts) *k, const SIMD_NAME(sample_t) *s,
+                                              simd_mask m, const int packed, const int bilinear)
 {
     if (!bilinear)
         return packed ? v_and_i(s->at[0], v_set1_i((int)RETRO_SIMD_COLOR_MASK))
                       : v_gather_colours(f->color_map, s->at[0], m);
     const simd_i32 byte = v_set1_i(0xff);
     simd_i32 c[4];
-    for (int i = 0; i < 4; i++) /* a packed cell's low byte is its height: the shifts drop it */
-        c[i] = packed ? s->at[i] : v_gather_colours(f->color_map, s->at[i], m);
+    if (packed && sf->quads) { /* at holds i0, i1, j0, j1; the shifts drop a cell's height byte */
+        c[0] = v_gather_colours(sf->cells, SIMD_NAME(tiled)(k, s->at[0], s->at[2]), m);
+        c[1] = v_gather_colours(sf->cells, SIMD_NAME(tiled)(k, s->at[1], s->at[2]), m);
+        c[2] = v_gather_colours(sf->cells, SIMD_NAME(tiled)(k, s->at[0], s->at[3]), m);
+        c[3] = v_gather_colours(sf->cells, SIMD_NAME(tiled)(k, s->at[1], s->at[3]), m);
+    } else
+        for (int i = 0; i < 4; i++) /* a packed cell's low byte is its height: the shifts drop it */
+            c[i] = packed ? s->at[i] : v_gather_colours(f->color_map, s->at[i], m);
 #define SIMD_BYTE(x, sh) v_and_i(v_srli_i(x, sh), byte)
     simd_i32 r = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 24), SIMD_BYTE(c[1], 24), SIMD_BYTE(c[2], 24),
                                            SIMD_BYTE(c[3], 24), s);
