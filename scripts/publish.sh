@@ -24,7 +24,8 @@ if grep -q '^> \*\*Noisy run' "$runs/BENCH.md"; then
 fi
 mkdir -p "$dest"
 for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distance.svg \
-  bench-speedup.png bench-resolution.png bench-distance.png; do
+  bench-speedup.png bench-resolution.png bench-distance.png \
+  bench-mesh-resolution.svg bench-mesh-distance.svg bench-mesh-resolution.png bench-mesh-distance.png; do
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
 if [ -f "$runs/ACCURACY.md" ]; then

@@ -150,7 +150,29 @@ def bench_blocks(md, raw, raw_json=None):
     if mesh_key:
         blocks["bench:mesh"] = mesh_block(t[mesh_key], scenes, ms, geo, verdict)
     blocks["bench:skipping"] = skipping_block(byname, scenes, ms, geo, t, raw_json)
+    sweep = mesh_sweep_block(t)
+    if sweep:
+        blocks["bench:mesh-sweep"] = sweep
     return blocks
+
+
+def mesh_sweep_block(t):
+    """The two families' cost against resolution and distance, and how their ratio moves."""
+    lines = []
+    for what in ("resolution", "distance"):
+        key = next((k for k in t if k.startswith(f"Mesh and voxel cost against {what}")), None)
+        if key is None:
+            return None
+        head, rows = t[key][0], t[key][1:]
+        lines += [f"*{key}*", "", "| " + " | ".join(head) + " |", "|---|---|" + "--:|" * (len(head) - 2)]
+        lines += ["| " + " | ".join(r) + " |" for r in rows]
+        ratio = next((r for r in rows if r[0].startswith("best mesh")), None)
+        if ratio:
+            pts = ", ".join(f"{h}: {c}" for h, c in zip(head[2:], ratio[2:]))
+            lines += ["", f"The best mesh kernel takes this many times the best voxel kernel's time, by {what}: "
+                      f"{pts}."]
+        lines.append("")
+    return "\n".join(lines).rstrip("\n")
 
 
 def mesh_block(table, scenes, voxel_ms, geo, verdict):

@@ -57,15 +57,19 @@ Test(render_opts, a_missing_mode_is_named)
     o.mode = 99;
     cr_assert_eq(refusal("naive", &o, why, sizeof why), RETRO_EINVAL);
     says(why, (const char *const[]){"voxel", "no mode 99", NULL});
-    /* the lod effect turns mode exact into lod, which the SIMD kernels lack: named as lod */
+    /* the lod effect turns mode exact into lod, and the check decides on lod: a kernel with
+     * mode lod but without mode exact's other effects takes it */
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = RETRO_FX_LOD;
     o.mode = RETRO_MODE_EXACT;
     o.fx = &fx;
     cr_assert_eq(retro_render_mode(retro_kernel_find("naive"), &o), RETRO_MODE_LOD);
-    cr_assert_eq(refusal("simd-sse2", &o, why, sizeof why), RETRO_EUNSUPPORTED);
-    says(why, (const char *const[]){"simd-sse2", "mode lod", NULL});
+    cr_assert_eq(refusal("ybuffer", &o, why, sizeof why), RETRO_OK, "%s", why);
+    /* the lod effect on mode truth: effects are defined on exact and lod only */
+    o.mode = RETRO_MODE_TRUTH;
+    cr_assert_eq(refusal("naive", &o, why, sizeof why), RETRO_EINVAL);
+    says(why, (const char *const[]){"truth", "lod", NULL});
 }
 
 /* A kernel that lacks an effect, and effects on a mode that does not define them. */
@@ -77,8 +81,8 @@ Test(render_opts, a_missing_effect_is_named)
     o.fx = &fx;
     char why[160];
     fx.flags = RETRO_FX_FOG | RETRO_FX_BILINEAR;
-    cr_assert_eq(refusal("simd-avx512", &o, why, sizeof why), RETRO_EUNSUPPORTED);
-    says(why, (const char *const[]){"simd-avx512", "bilinear", NULL});
+    cr_assert_eq(refusal("mesh-zbuffer", &o, why, sizeof why), RETRO_EUNSUPPORTED);
+    says(why, (const char *const[]){"mesh-zbuffer", "bilinear", NULL});
     fx.flags = RETRO_FX_TEXTURE;
     cr_assert_eq(refusal("ybuffer", &o, why, sizeof why), RETRO_EUNSUPPORTED);
     says(why, (const char *const[]){"ybuffer", "texture", NULL});
@@ -136,7 +140,7 @@ Test(render_opts, render_refuses_as_the_check_does)
     cr_assert(rc);
     retro_effects fx;
     retro_effects_defaults(&fx);
-    fx.flags = RETRO_FX_BILINEAR;
+    fx.flags = RETRO_FX_TEXTURE;
     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
     o.fx = &fx;
     const retro_kernel *k = retro_kernel_find("simd-avx2");
