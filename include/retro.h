@@ -50,8 +50,8 @@ typedef enum {
 #define RETRO_MAX_MAP 16384          /* S */
 #define RETRO_MAX_DISTANCE (1 << 22) /* D */
 
-#define RETRO_FX_POS 24  /* fractional bits of mode fixed's positions */
-#define RETRO_FX_PROJ 16 /* fractional bits of mode fixed's projection */
+#define RETRO_Q_POS 24  /* fractional bits of mode fixed's positions */
+#define RETRO_Q_PROJ 16 /* fractional bits of mode fixed's projection */
 #define RETRO_LOD_DEFAULT 0.02f
 
 /* The voxel family's frame constants: everything its kernels read for one frame, built by

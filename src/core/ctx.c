@@ -34,9 +34,9 @@ void retro_ctx_free(retro_ctx *rc)
     free(rc->rxd);
     free(rc->ryd);
     free(rc->kdd);
-    free(rc->rx_fx);
-    free(rc->ry_fx);
-    free(rc->kd_fx);
+    free(rc->rx_q);
+    free(rc->ry_q);
+    free(rc->kd_q);
     free(rc->dist);
     free(rc->fog);
     retro_effects_bake_free(&rc->bake);

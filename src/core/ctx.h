@@ -33,7 +33,7 @@ struct retro_ctx {
     float *lx, *ly, *sx, *sy;
     int *vcap;          /* capacity cap_d + 1 */
     double *rxd, *ryd, *kdd;        /* mode truth */
-    int64_t *rx_fx, *ry_fx, *kd_fx; /* mode fixed */
+    int64_t *rx_q, *ry_q, *kd_q; /* mode fixed */
     int *dist;          /* mode lod, capacity cap_d + 1 */
     uint16_t *fog;      /* fog weight per distance */
     int cap_w, cap_d;

@@ -34,8 +34,8 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
         size_t n = (size_t)w;
         if (grow((void **)&rc->rx, n, sizeof(float)) || grow((void **)&rc->ry, n, sizeof(float)) ||
             grow((void **)&rc->ybuf, n, sizeof(int)) || grow((void **)&rc->rxd, n, sizeof(double)) ||
-            grow((void **)&rc->ryd, n, sizeof(double)) || grow((void **)&rc->rx_fx, n, sizeof(int64_t)) ||
-            grow((void **)&rc->ry_fx, n, sizeof(int64_t)))
+            grow((void **)&rc->ryd, n, sizeof(double)) || grow((void **)&rc->rx_q, n, sizeof(int64_t)) ||
+            grow((void **)&rc->ry_q, n, sizeof(int64_t)))
             return RETRO_ENOMEM;
         rc->cap_w = w;
     }
@@ -45,7 +45,7 @@ static retro_err reserve(retro_ctx *rc, int w, int d)
             grow((void **)&rc->ly, n, sizeof(float)) || grow((void **)&rc->sx, n, sizeof(float)) ||
             grow((void **)&rc->sy, n, sizeof(float)) || grow((void **)&rc->qx, n, sizeof(float)) ||
             grow((void **)&rc->qy, n, sizeof(float)) || grow((void **)&rc->vcap, n + 1, sizeof(int)) ||
-            grow((void **)&rc->kdd, n, sizeof(double)) || grow((void **)&rc->kd_fx, n, sizeof(int64_t)) ||
+            grow((void **)&rc->kdd, n, sizeof(double)) || grow((void **)&rc->kd_q, n, sizeof(int64_t)) ||
             grow((void **)&rc->dist, n + 1, sizeof(int)) || grow((void **)&rc->fog, n, sizeof(uint16_t)))
             return RETRO_ENOMEM;
         rc->cap_d = d;
@@ -116,7 +116,7 @@ static int row_truth(const retro_frame *f, int d, int64_t dh)
 
 static int row_fixed(const retro_frame *f, int d, int64_t dh)
 {
-    return retro_fixed_row(f->kd_fx[d], f->half_h_fx, f->H, dh);
+    return retro_fixed_row(f->kd_q[d], f->half_h_q, f->H, dh);
 }
 
 static int64_t to_fixed(double v, int bits)
@@ -184,15 +184,15 @@ static void setup_truth(retro_ctx *rc, retro_frame *f, const player_t *p)
 static void setup_fixed(retro_ctx *rc, retro_frame *f, const player_t *p)
 {
     setup_truth(rc, f, p);
-    f->x0_fx = to_fixed(f->x0_d, RETRO_FX_POS);
-    f->y0_fx = to_fixed(f->y0_d, RETRO_FX_POS);
+    f->x0_q = to_fixed(f->x0_d, RETRO_Q_POS);
+    f->y0_q = to_fixed(f->y0_d, RETRO_Q_POS);
     for (int u = 0; u < f->W; u++) {
-        rc->rx_fx[u] = to_fixed(rc->rxd[u], RETRO_FX_POS);
-        rc->ry_fx[u] = to_fixed(rc->ryd[u], RETRO_FX_POS);
+        rc->rx_q[u] = to_fixed(rc->rxd[u], RETRO_Q_POS);
+        rc->ry_q[u] = to_fixed(rc->ryd[u], RETRO_Q_POS);
     }
     for (int d = 1; d < f->D; d++)
-        rc->kd_fx[d] = to_fixed(rc->kdd[d], RETRO_FX_PROJ);
-    f->half_h_fx = to_fixed(0.5 * (double)f->H, RETRO_FX_PROJ);
+        rc->kd_q[d] = to_fixed(rc->kdd[d], RETRO_Q_PROJ);
+    f->half_h_q = to_fixed(0.5 * (double)f->H, RETRO_Q_PROJ);
     cap_rows(rc, f->D, row_fixed);
 }
 
@@ -287,9 +287,9 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     f->rxd = rc->rxd;
     f->ryd = rc->ryd;
     f->kdd = rc->kdd;
-    f->rx_fx = rc->rx_fx;
-    f->ry_fx = rc->ry_fx;
-    f->kd_fx = rc->kd_fx;
+    f->rx_q = rc->rx_q;
+    f->ry_q = rc->ry_q;
+    f->kd_q = rc->kd_q;
     f->dist = rc->dist;
     rc->packed.offered = 0; /* until a threaded kernel offers it for this frame */
     f->packed = &rc->packed;

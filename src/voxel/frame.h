@@ -64,10 +64,10 @@ struct retro_frame {
         const double *rxd, *ryd; /* [W] */
         const double *kdd;       /* [D] (0.5*W)/d */
     };
-    struct { /* mode fixed: positions with RETRO_FX_POS fractional bits, projection RETRO_FX_PROJ */
-        int64_t x0_fx, y0_fx, half_h_fx;
-        const int64_t *rx_fx, *ry_fx; /* [W] */
-        const int64_t *kd_fx;         /* [D] */
+    struct { /* mode fixed: positions with RETRO_Q_POS fractional bits, projection RETRO_Q_PROJ */
+        int64_t x0_q, y0_q, half_h_q;
+        const int64_t *rx_q, *ry_q; /* [W] */
+        const int64_t *kd_q;         /* [D] */
     };
 };
 

@@ -51,7 +51,7 @@ static int sample(const retro_frame *f, int u, int d, uint32_t *color)
         break;
     case RETRO_MODE_FIXED:
         idx = retro_fixed_sample(f, u, d);
-        v = retro_fixed_row(f->kd_fx[d], f->half_h_fx, f->H, f->height_map[idx] - f->height);
+        v = retro_fixed_row(f->kd_q[d], f->half_h_q, f->H, f->height_map[idx] - f->height);
         break;
     default:
         return sample_exact(f, u, d, color);

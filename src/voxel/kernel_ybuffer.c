@@ -78,7 +78,7 @@ static inline __attribute__((always_inline)) int sample(const retro_frame *f, co
         v = retro_truth_row(f->kdd[d], 0.5 * (double)H, H, f->height_map[idx] - f->height);
     } else if (kind == KIND_FIXED) {
         idx = retro_fixed_sample(f, u, d);
-        v = retro_fixed_row(f->kd_fx[d], f->half_h_fx, H, f->height_map[idx] - f->height);
+        v = retro_fixed_row(f->kd_q[d], f->half_h_q, H, f->height_map[idx] - f->height);
     } else {
         const float qx = f->x0 + fd * f->rx[u], qy = f->y0 + fd * f->ry[u];
         if (bilinear) {

@@ -66,14 +66,14 @@ RETRO_HELPER int retro_truth_row(double kd, double half_h, int H, int64_t dh)
     return 0;
 }
 
-/* Row v of a sample in mode fixed: VF = K_d * dh + H/2 with RETRO_FX_PROJ fractional bits. */
+/* Row v of a sample in mode fixed: VF = K_d * dh + H/2 with RETRO_Q_PROJ fractional bits. */
 RETRO_HELPER int retro_fixed_row(int64_t kd, int64_t half_h, int H, int64_t dh)
 {
     int64_t vf = kd * dh + half_h;
-    if (vf >= (int64_t)H << RETRO_FX_PROJ)
+    if (vf >= (int64_t)H << RETRO_Q_PROJ)
         return H;
     if (vf >= 0)
-        return (int)(vf >> RETRO_FX_PROJ);
+        return (int)(vf >> RETRO_Q_PROJ);
     return 0;
 }
 
@@ -150,7 +150,7 @@ RETRO_HELPER int retro_course_cell_fast(float q, float k, float inv_k)
 /* floor(v / 2^bits) mod S without shifting a negative value (implementation-defined in C). */
 RETRO_HELPER int retro_fixed_cell(int64_t v, int S)
 {
-    int64_t q = v >= 0 ? v >> RETRO_FX_POS : -((-(v + 1)) >> RETRO_FX_POS) - 1;
+    int64_t q = v >= 0 ? v >> RETRO_Q_POS : -((-(v + 1)) >> RETRO_Q_POS) - 1;
     int64_t i = q % S;
     return (int)(i < 0 ? i + S : i);
 }
@@ -173,7 +173,7 @@ RETRO_HELPER size_t retro_truth_sample(const retro_frame *f, int u, int d)
 
 RETRO_HELPER size_t retro_fixed_sample(const retro_frame *f, int u, int d)
 {
-    int64_t qx = f->x0_fx + (int64_t)d * f->rx_fx[u], qy = f->y0_fx + (int64_t)d * f->ry_fx[u];
+    int64_t qx = f->x0_q + (int64_t)d * f->rx_q[u], qy = f->y0_q + (int64_t)d * f->ry_q[u];
     return (size_t)retro_fixed_cell(qy, f->S) * (size_t)f->S + (size_t)retro_fixed_cell(qx, f->S);
 }
 
