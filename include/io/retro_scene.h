@@ -55,6 +55,13 @@ typedef struct retro_effects {
     float morph_t;             /* 0..1 */
 } retro_effects;
 
+/* The valid ranges of the parameters, stated once: the library refuses effects outside them
+ * (RETRO_EINVAL) and the scene parser names the line that leaves them. */
+#define RETRO_FX_FOG_DIST_MAX 1e7f   /* fog start and end: 0..this */
+#define RETRO_FX_FOG_DENSITY_MAX 1.0f /* fog density: above 0, at most this */
+#define RETRO_FX_SHADE_GAIN_MAX 4.0f /* ambient and diffuse: 0..this */
+#define RETRO_FX_WATER_LEVEL_MAX 255 /* water level: 0..this; alphas 0..1 */
+
 /* Sets every parameter to its documented default, flags to 0. */
 void retro_effects_defaults(retro_effects *fx);
 

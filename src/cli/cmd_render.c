@@ -9,12 +9,15 @@
 #include "cli.h"
 #include "ctx.h"
 #include "hmax_pyramid.h"
+#include "isa.h"
 #include "kernels.h"
 #include "retro_mesh.h"
 #include "scene_args.h"
 
 static void help(void)
 {
+    char isa[64];
+    retro_isa_list(isa, sizeof isa);
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
            "                        [--threads N] [--lod L] [--no-skip] [--simd-skip] [--stats]\n"
@@ -38,7 +41,7 @@ static void help(void)
            "  -z HEIGHT   camera height (default: 60 above the terrain and the mean height)\n"
            "  -a ANGLE    degrees, counter-clockwise from +x (default 0)\n"
            "  --sky HEX   sky colour RRGGBB (default 66a3ff)\n"
-           "  --isa L     highest ISA level to use: none, sse2, avx2, avx512 (also RETRO_ISA)\n"
+           "  --isa L     highest ISA level to use: %s (also RETRO_ISA)\n"
            "  --threads N threads for threaded kernels (default OMP_NUM_THREADS or all cores)\n"
            "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
            "              image is the same, only slower\n"
@@ -55,7 +58,7 @@ static void help(void)
            "A render that would take more than a few seconds (the naive reference at a large\n"
            "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
            "environment variables read: docs/INPUT.md.\n",
-           RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE);
+           RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE, isa);
 }
 
 static int render_extra(void *user, const char *a, const char *v)

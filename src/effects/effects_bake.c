@@ -148,15 +148,18 @@ static int in(float v, float lo, float hi)
 int retro_effects_valid(const retro_effects *fx)
 {
     unsigned f = fx->flags;
-    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, 1.0f)
-                                            : in(fx->fog_start, 0, 1e7f) && in(fx->fog_end, 0, 1e7f)))
+    if ((f & RETRO_FX_FOG) && !(fx->fog_exp ? in(fx->fog_density, 1e-30f, RETRO_FX_FOG_DENSITY_MAX)
+                                            : in(fx->fog_start, 0, RETRO_FX_FOG_DIST_MAX) &&
+                                                  in(fx->fog_end, 0, RETRO_FX_FOG_DIST_MAX)))
         return 0;
     if (f & RETRO_FX_SHADE) {
         float len2 = fx->sun[0] * fx->sun[0] + fx->sun[1] * fx->sun[1] + fx->sun[2] * fx->sun[2];
-        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, 4) || !in(fx->diffuse, 0, 4))
+        if (!in(len2, 0.99f, 1.01f) || !in(fx->ambient, 0, RETRO_FX_SHADE_GAIN_MAX) ||
+            !in(fx->diffuse, 0, RETRO_FX_SHADE_GAIN_MAX))
             return 0;
     }
-    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= 255 && in(fx->water_alpha0, 0, 1) &&
+    if ((f & RETRO_FX_WATER) && !(fx->water_level >= 0 && fx->water_level <= RETRO_FX_WATER_LEVEL_MAX &&
+                                  in(fx->water_alpha0, 0, 1) &&
                                   in(fx->water_alpha_per_unit, 0, 1)))
         return 0;
     if ((f & RETRO_FX_HORIZON) && (fx->pitch < -RETRO_MAX_SCREEN || fx->pitch > RETRO_MAX_SCREEN))

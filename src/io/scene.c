@@ -373,11 +373,11 @@ static int on_key(parser *P, int sec, const char *k, const char *v)
         break;
     case SEC_FOG:
         if (KEY("start"))
-            return FLOAT(0, 1e7, &fx->fog_start);
+            return FLOAT(0, RETRO_FX_FOG_DIST_MAX, &fx->fog_start);
         if (KEY("end"))
-            return FLOAT(0, 1e7, &fx->fog_end);
+            return FLOAT(0, RETRO_FX_FOG_DIST_MAX, &fx->fog_end);
         if (KEY("density")) {
-            if (!FLOAT(0, 1, &fx->fog_density))
+            if (!FLOAT(0, RETRO_FX_FOG_DENSITY_MAX, &fx->fog_density))
                 return 0;
             if (!(fx->fog_density > 0))
                 return fail(P, "[%s] %s: must be above 0", sn, k);
@@ -388,13 +388,13 @@ static int on_key(parser *P, int sec, const char *k, const char *v)
         if (KEY("sun"))
             return get_sun(P, v, fx->sun);
         if (KEY("ambient"))
-            return FLOAT(0, 4, &fx->ambient);
+            return FLOAT(0, RETRO_FX_SHADE_GAIN_MAX, &fx->ambient);
         if (KEY("diffuse"))
-            return FLOAT(0, 4, &fx->diffuse);
+            return FLOAT(0, RETRO_FX_SHADE_GAIN_MAX, &fx->diffuse);
         break;
     case SEC_WATER:
         if (KEY("level"))
-            return INT(0, 255, &fx->water_level);
+            return INT(0, RETRO_FX_WATER_LEVEL_MAX, &fx->water_level);
         if (KEY("color"))
             return get_rgb(P, sn, k, v, &fx->water_color);
         if (KEY("alpha0"))
