@@ -4,6 +4,7 @@
 #include "bench_report.h"
 #include "mesh_cases.h"
 #include "busy.h"
+#include "sweep_axes.h"
 
 #include <algorithm>
 #include <array>
@@ -142,27 +143,12 @@ bool write_charts_gp(const std::string &path, const BenchPlan &plan, const RunCo
       << "eval('set terminal '.term)\nset termoption noenhanced\nset encoding utf8\n\n";
     speedup_chart(o, plan, ctx);
     if (plan.sweep_scene) {
-        std::vector<std::string> labels;
-        std::vector<double> xs;
-        std::vector<std::array<int, 3>> points;
-        for (auto [w, h] : plan.resolutions) {
-            labels.push_back(std::to_string(w) + "x" + std::to_string(h));
-            xs.push_back(w * static_cast<double>(h) / 1e6);
-            points.push_back({w, h, plan.D});
-        }
-        sweep_chart(o, plan, GROUP_RESOLUTION, "resolution", labels, xs, points,
+        const SweepAxis r = resolution_axis(plan), d = distance_axis(plan);
+        sweep_chart(o, plan, GROUP_RESOLUTION, "resolution", r.labels, r.xs, r.points,
                     std::string("ms/frame against resolution: mode exact, ") +
                         plan.sweep_scene->name + ", D " + std::to_string(plan.D),
                     "Mpixel per frame (log scale)");
-        labels.clear();
-        xs.clear();
-        points.clear();
-        for (int d : plan.distances) {
-            labels.push_back(std::to_string(d));
-            xs.push_back(d);
-            points.push_back({plan.W, plan.H, d});
-        }
-        sweep_chart(o, plan, GROUP_DISTANCE, "distance", labels, xs, points,
+        sweep_chart(o, plan, GROUP_DISTANCE, "distance", d.labels, d.xs, d.points,
                     std::string("ms/frame against distance: mode exact, ") +
                         plan.sweep_scene->name + ", " + std::to_string(plan.W) + "x" +
                         std::to_string(plan.H),

@@ -9,6 +9,7 @@
 
 #include "bench_report.h"
 #include "mesh_cases.h"
+#include "sweep_axes.h"
 
 static const double NaN = std::nan("");
 
@@ -256,27 +257,12 @@ void mesh_charts(std::ostream &o, const BenchPlan &plan)
 {
     if (!plan.sweep_scene)
         return;
-    std::vector<std::string> labels;
-    std::vector<double> xs;
-    std::vector<std::array<int, 3>> points;
-    for (auto [w, h] : plan.resolutions) {
-        labels.push_back(std::to_string(w) + "x" + std::to_string(h));
-        xs.push_back(w * static_cast<double>(h) / 1e6);
-        points.push_back({w, h, plan.D});
-    }
-    sweep_chart(o, plan, GROUP_RESOLUTION, "mesh-resolution", labels, xs, points,
+    const SweepAxis r = resolution_axis(plan), d = distance_axis(plan);
+    sweep_chart(o, plan, GROUP_RESOLUTION, "mesh-resolution", r.labels, r.xs, r.points,
                 std::string("mesh and voxel ms/frame against resolution: ") + plan.sweep_scene->name + ", D " +
                     std::to_string(plan.D),
                 "Mpixel per frame (log scale)");
-    labels.clear();
-    xs.clear();
-    points.clear();
-    for (int d : plan.distances) {
-        labels.push_back(std::to_string(d));
-        xs.push_back(d);
-        points.push_back({plan.W, plan.H, d});
-    }
-    sweep_chart(o, plan, GROUP_DISTANCE, "mesh-distance", labels, xs, points,
+    sweep_chart(o, plan, GROUP_DISTANCE, "mesh-distance", d.labels, d.xs, d.points,
                 std::string("mesh and voxel ms/frame against distance: ") + plan.sweep_scene->name + ", " +
                     std::to_string(plan.W) + "x" + std::to_string(plan.H),
                 "distance D (log scale)");
