@@ -20,19 +20,7 @@ static void fast_full_vertex(retro_mesh_ctx *mc, uint32_t *done, int stride, int
     if (done[j] >> i & 1u)
         return;
     done[j] |= 1u << i;
-    const mesh_frame *f = &mc->f;
-    int at = j * stride + i;
-    mesh_vert *v = &mc->grid[at];
-    mesh_vertex_stage(f, Ia + i, Ja + j, v);
-    double d[6];
-    mesh_plane_distances(f, v, d);
-    mesh_snap *s = &mc->snap[at];
-    s->out = 0;
-    for (int p = 0; p < 6; p++)
-        s->out |= d[p] < 0 ? 1u << p : 0u;
-    s->ok = s->out == 0;
-    if (s->ok)
-        mesh_project(f, v, &s->X, &s->Y);
+    mesh_grid_vertex(&mc->f, Ia + i, Ja + j, &mc->grid[j * stride + i], &mc->snap[j * stride + i]);
 }
 
 /* A triangle of an inside square whose attributes the nearest raster does not carry (shade,

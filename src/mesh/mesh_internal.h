@@ -23,6 +23,7 @@
 #define mesh_scan_convert retro_mesh_scan_convert
 #define mesh_traverse retro_mesh_traverse
 #define mesh_vertex_stage retro_mesh_vertex_stage
+#define mesh_grid_vertex retro_mesh_grid_vertex
 #define mesh_water_add retro_mesh_water_add
 #define mesh_water_draw retro_mesh_water_draw
 #define mesh_fast_block_avx2 retro_mesh_fast_block_avx2
@@ -171,6 +172,9 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
 void mesh_vertex_stage(const mesh_frame *f, int I, int J, mesh_vert *v);
 void mesh_plane_distances(const mesh_frame *f, const mesh_vert *v, double *d);
 void mesh_project(const mesh_frame *f, const mesh_vert *v, int64_t *X, int64_t *Y);
+/* Grid vertex (I, J) through the vertex stage, classified against the six frustum planes and,
+ * when inside all of them, projected and snapped: the record every traversal keeps per vertex. */
+void mesh_grid_vertex(const mesh_frame *f, int I, int J, mesh_vert *v, mesh_snap *s);
 void mesh_primitive_assembly(retro_mesh_ctx *mc, const mesh_vert *g, const mesh_snap *s, int stride,
                              int a, int I, int J);
 void mesh_clip_and_draw(retro_mesh_ctx *mc, const mesh_tri *t, const mesh_snap *s3[3]);

@@ -7,6 +7,19 @@
 
 #include "mesh_internal.h"
 
+void mesh_grid_vertex(const mesh_frame *f, int I, int J, mesh_vert *v, mesh_snap *s)
+{
+    mesh_vertex_stage(f, I, J, v);
+    double d[6];
+    mesh_plane_distances(f, v, d);
+    s->out = 0;
+    for (int p = 0; p < 6; p++)
+        s->out |= d[p] < 0 ? 1u << p : 0u;
+    s->ok = s->out == 0;
+    if (s->ok)
+        mesh_project(f, v, &s->X, &s->Y);
+}
+
 /* The block box [x0, x1] x [y0, y1] x [hmin, hmax] lies outside one plane (by a margin that
  * covers the rounding of the vertex stage, so culling never removes a visible triangle). */
 static int block_outside(const mesh_frame *f, double x0, double x1, double y0, double y1)
@@ -64,20 +77,8 @@ static void block(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, in
     }
     int ni = Ib - Ia + 1, nj = Jb - Ja + 1, stride = ni + 1;
     for (int j = 0; j <= nj; j++)
-        for (int i = 0; i <= ni; i++) {
-            int at = j * stride + i;
-            mesh_vert *v = &mc->grid[at];
-            mesh_vertex_stage(f, Ia + i, Ja + j, v);
-            double d[6];
-            mesh_plane_distances(f, v, d);
-            mesh_snap *s = &mc->snap[at];
-            s->out = 0;
-            for (int p = 0; p < 6; p++)
-                s->out |= d[p] < 0 ? 1u << p : 0u;
-            s->ok = s->out == 0;
-            if (s->ok)
-                mesh_project(f, v, &s->X, &s->Y);
-        }
+        for (int i = 0; i <= ni; i++)
+            mesh_grid_vertex(f, Ia + i, Ja + j, &mc->grid[j * stride + i], &mc->snap[j * stride + i]);
     /* painter: farthest row first, farthest square first in a row; z-buffer: the reverse */
     int rev = f->kernel == RETRO_MESH_ZBUFFER;
     int fy = sy >= 0, fx = sx >= 0; /* far rows/columns have larger indices */
