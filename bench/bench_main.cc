@@ -39,7 +39,6 @@ static struct {
 // binds thread t to core t). It is re-bound only when n changes, because the omp kernel
 // remembers per thread where it bound it and would not notice being moved.
 static int bound_cores = 0;
-static bool simd_skip = false; // --simd-skip
 
 static void bind_for(int threads)
 {
@@ -99,7 +98,6 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         live.opts.fx = c->fx;
         live.opts.threads = c->threads;
         live.opts.no_skip = c->no_skip;
-        live.opts.simd_skip = simd_skip;
         live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
         live.owner = c;
         bind_for(c->threads);
@@ -205,7 +203,6 @@ int main(int argc, char **argv)
         return 1;
     }
     plan.cores = ctx.cores;
-    simd_skip = plan.simd_skip;
     plan_cases(&plan);
     if (!opt.no_extras && opt.scene.empty())
         plan_extras(&plan);

@@ -63,7 +63,6 @@ struct BenchPlan {
     int W = 640, H = 480, D = 800;                  // the matrix frame
     int cores = 1;
     bool no_skip_twins = false;                     // --no-skip: every mode exact case twice
-    bool simd_skip = false;                         // --simd-skip: retro_render_opts.simd_skip in every case
 
     // The case with exactly these parameters, or nullptr.
     const BenchCase *find(const retro_kernel *k, int threads, const bench_scene *s,

@@ -10,7 +10,7 @@ void options_usage()
 {
     std::printf(
         "usage: retro-bench [--quick] [--report=DIR] [--charts=FILE] [--scene=PREFIX]\n"
-        "                   [--size=WxH] [--distance=D] [--modes=LIST] [--no-skip] [--simd-skip]\n"
+        "                   [--size=WxH] [--distance=D] [--modes=LIST] [--no-skip]\n"
         "                   [--benchmark_...]\n\n"
         "  --quick         3 repetitions of 0.01 s, no warm-up beyond each case's first\n"
         "                  frame, 3 points per sweep (make bench QUICK=1)\n"
@@ -23,7 +23,7 @@ void options_usage()
         "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n"
         "  --no-skip       time every mode exact case also with occlusion skipping off\n"
         "                  (docs/SKIPPING.md), as a twin named .../noskip\n"
-        "  --simd-skip     let the SIMD strips skip too (retro_render_opts.simd_skip; off by default)\n\n"
+        "\n"
         "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
         "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"
         "Every --benchmark_* flag of google-benchmark works; given flags override the\n"
@@ -103,8 +103,6 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
             ok = o->no_extras = true;
         else if (a == "--no-skip")
             ok = plan->no_skip_twins = true;
-        else if (a == "--simd-skip")
-            ok = plan->simd_skip = true;
         else if (!ok && option(a, "--size=", &v))
             ok = std::sscanf(v.c_str(), "%dx%d", &plan->W, &plan->H) == 2 && plan->W > 0 &&
                  plan->H > 0;

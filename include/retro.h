@@ -85,12 +85,10 @@ typedef struct retro_render_opts {
                       * 0 < lod <= 100 (docs/ACCURACY.md) */
     int threads;     /* threads of threaded kernels; 0: OMP_NUM_THREADS or the core count */
     int no_skip;     /* 1: occlusion skipping off (the same bytes, every sample evaluated) */
-    int simd_skip;   /* 1: the SIMD strips skip too, per group of columns (docs/SKIPPING.md):
-                      * exact, but not faster everywhere, so off by default */
 } retro_render_opts;
 
 /* Mode exact, no effects, the default lod rate and thread count, scalar skipping on. */
-#define RETRO_RENDER_OPTS_DEFAULT {RETRO_MODE_EXACT, NULL, 0.0f, 0, 0, 0}
+#define RETRO_RENDER_OPTS_DEFAULT {RETRO_MODE_EXACT, NULL, 0.0f, 0, 0}
 retro_render_opts retro_render_opts_default(void);
 
 /* A kernel renders one frame from its family's frame constants (for voxel kernels a

@@ -22,7 +22,7 @@ static void report(void *user, const retro_check_variant *v, const retro_check_r
     report_ctx *rep = user;
     rep->ran += r->ran;
     const retro_frame *f = retro_ctx_frame(v->ctx);
-    rep->with_pyramid += r->ran && f->pyr && f->simd_skip;
+    rep->with_pyramid += r->ran && f->pyr;
     if (r->ran && (r->err || r->differ) && !rep->first[0])
         retro_check_describe(rep->chk, v, r, rep->first, sizeof rep->first);
 }
@@ -36,7 +36,6 @@ trio *rig_open(void)
     for (int k = 0; k < NSIMD; k++) {
         cr_assert_eq(retro_check_init(&g->chk[k], &retro_family_voxel, skipping_kernels[k], 2), 0, "%s",
                      skipping_kernels[k]);
-        g->chk[k].simd_skip = 1; /* the group skipping is opt-in (retro_render_opts.simd_skip) */
     }
     return g;
 }

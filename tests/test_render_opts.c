@@ -35,9 +35,9 @@ Test(render_opts, the_default_initialiser_and_function_agree)
     retro_render_opts a = RETRO_RENDER_OPTS_DEFAULT, b = retro_render_opts_default();
     cr_assert_eq(a.mode, RETRO_MODE_EXACT);
     cr_assert_null(a.fx);
-    cr_assert(a.lod == 0.0f && a.threads == 0 && a.no_skip == 0 && a.simd_skip == 0);
+    cr_assert(a.lod == 0.0f && a.threads == 0 && a.no_skip == 0);
     cr_assert(a.mode == b.mode && a.fx == b.fx && a.lod == b.lod && a.threads == b.threads &&
-              a.no_skip == b.no_skip && a.simd_skip == b.simd_skip);
+              a.no_skip == b.no_skip);
 }
 
 Test(render_opts, free_and_map_changed_take_null)

@@ -91,7 +91,6 @@ static retro_render_opts opts(const retro_check *chk, int mode, const retro_effe
     o.fx = fx;
     o.lod = chk->lod;
     o.threads = threads;
-    o.simd_skip = chk->simd_skip;
     return o;
 }
 

@@ -48,7 +48,6 @@ typedef struct retro_check {
      * threaded kernels at this thread count. The fuzz target lets its input choose. */
     int select_level, select_threads;
     float lod;         /* mode lod's step growth every render asks for (retro_render_opts.lod), 0 default */
-    int simd_skip;     /* every render's retro_render_opts.simd_skip */
 } retro_check;
 
 /* Fills chk with every kernel of fam but its reference that runs here, at every ISA level up

@@ -20,7 +20,7 @@ static void help(void)
     retro_isa_list(isa, sizeof isa);
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
-           "                        [--threads N] [--lod L] [--no-skip] [--simd-skip] [--stats]\n"
+           "                        [--threads N] [--lod L] [--no-skip] [--stats]\n"
            "                        [--time [N]]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
@@ -45,8 +45,6 @@ static void help(void)
            "  --threads N threads for threaded kernels (default OMP_NUM_THREADS or all cores)\n"
            "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
            "              image is the same, only slower\n"
-           "  --simd-skip the SIMD strips (and omp, pthreads) skip too, per group of columns;\n"
-           "              exact, off by default: not yet faster where measured\n"
            "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
            "              paint, and their share of the frame's samples (W x (D-1)), and\n"
            "              simd-avx512's where it runs; mesh: the triangles submitted, after\n"
@@ -151,7 +149,7 @@ int cmd_render(int argc, char **argv)
     render_opts o;
     render_opts_init(&o);
     /* The two flags without a value are taken out before the shared parser sees argv. */
-    int no_skip = 0, simd_skip = 0, stats = 0, n = 0;
+    int no_skip = 0, stats = 0, n = 0;
     long time_n = 0; /* --time: frames to time, 0 when not asked */
     char **args = malloc(((size_t)argc + 1) * sizeof *args);
     if (!args)
@@ -159,8 +157,6 @@ int cmd_render(int argc, char **argv)
     for (int i = 0; i < argc; i++) {
         if (i > 0 && !strcmp(argv[i], "--no-skip"))
             no_skip = 1;
-        else if (i > 0 && !strcmp(argv[i], "--simd-skip"))
-            simd_skip = 1;
         else if (i > 0 && !strcmp(argv[i], "--stats"))
             stats = 1;
         else if (i > 0 && !strcmp(argv[i], "--time")) {
@@ -191,7 +187,6 @@ int cmd_render(int argc, char **argv)
     if (job_open("render", &o, &j))
         return CLI_EBADINPUT;
     j.opts.no_skip = no_skip;
-    j.opts.simd_skip = simd_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
     int status = time_n ? time_frames(&j, &p, time_n) : 0;

@@ -24,7 +24,6 @@ struct retro_ctx {
     float lod;          /* mode lod's step growth, 0 for RETRO_LOD_DEFAULT */
     int threads;        /* threads of threaded kernels (0: the default) */
     int no_skip;        /* occlusion skipping off */
-    int simd_skip;      /* the SIMD strips skip too */
 
     retro_frame frame;  /* built by the voxel family's setup (frame.c); kernels get it const */
     /* Frame constants, capacity cap_w (per column) or cap_d (per distance). */

@@ -41,7 +41,6 @@ void retro_ctx_take_opts(retro_ctx *rc, const retro_render_opts *o)
     rc->lod = o->lod;
     rc->threads = o->threads;
     rc->no_skip = o->no_skip;
-    rc->simd_skip = o->simd_skip;
 }
 
 retro_err retro_render(retro_ctx *rc, const retro_kernel *k, const retro_render_opts *o, const player_t *p,

@@ -299,13 +299,11 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     case RETRO_MODE_FIXED: setup_fixed(rc, f, p); break;
     default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
-    f->simd_skip = 0;
 #ifndef RETRO_SUBMISSION
     /* occlusion skipping (docs/SKIPPING.md) in modes exact and lod, unless switched off */
     if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && !rc->no_skip &&
         retro_pyramid_get(&rc->pyr, hm, S, &f->pyr))
         return RETRO_ENOMEM;
-    f->simd_skip = f->pyr && rc->simd_skip;
 #endif
     f->strip = retro_strip_best(mode, f->fx); /* once per frame, for the threaded kernels */
     return RETRO_OK;

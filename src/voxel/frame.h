@@ -50,8 +50,6 @@ struct retro_frame {
         /* modes exact and lod: the map's maximum-height pyramid when occlusion skipping is on
          * (hmax_pyramid.h, docs/SKIPPING.md), else NULL */
         const struct retro_pyramid *pyr;
-        /* with pyr: the SIMD strips skip too, per group of columns (retro_render_opts) */
-        int simd_skip;
     };
     struct { /* mode course */
         float cw2;         /* (float)(W/2) */

@@ -32,8 +32,8 @@ enum {
     RETRO_PYR_LMAX = 12,  /* blocks of 4096 cells */
     RETRO_SKIP_NEAR = 4,  /* distances evaluated one by one after a probe that cannot skip, */
     RETRO_SKIP_FAR = 32,  /* doubling up to this many while the probes keep failing */
-    /* retro_skip_group: failing windows per probe before it gives up. A vector step costs
-     * about one window read, so a group cannot afford the full descent. */
+    /* the SIMD strips' probe (simd_skip_tpl.h): failing windows per probe before it gives up.
+     * A failing window costs about one vector step, so a group cannot afford a long descent. */
     RETRO_SKIP_GROUP_TRIES = 64,
 };
 
@@ -71,7 +71,7 @@ extern retro_sample_counts retro_ybuffer_counts;
 void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 /* The same counts for the counting build of simd-avx512 (kernel_simd_avx512.c compiled with
  * RETRO_COUNT_SAMPLES): a sample is a live lane at a distance its group evaluated, painting a
- * lane that rose; probes and windows are retro_skip_group's. Frames the vector path does not
+ * lane that rose; probes and windows are the group probe's (simd_skip_tpl.h). Frames the vector path does not
  * render (retro_simd_check) go to the uncounted scalar kernel and count nothing. */
 extern retro_sample_counts retro_simd_counts;
 void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
@@ -218,120 +218,5 @@ retro_skip_column(const retro_pyramid *p, const retro_frame *f, retro_skip_col *
     return retro_skip_run(p, f, c, d, d_end, y, pow2, bilinear, NULL);
 }
 
-
-/* Per-group traversal state for the SIMD strips, whose lanes are adjacent columns ua..ub that
- * share their distance: the rays of the two end columns, the lateral spread per unit distance
- * and the level the next probe starts at. */
-typedef struct retro_skip_grp {
-    float rxa, rya, rxb, ryb; /* rays of columns ua and ub, as the kernel reads them */
-    float g;                  /* max(|rxb - rxa|, |ryb - rya|): the group's width per distance */
-    float inv_rg;             /* 1 / (max |r| + g): run-length estimate (every run is confirmed) */
-    int level;
-} retro_skip_grp;
-
-RETRO_HELPER void retro_skip_grp_init(retro_skip_grp *g, const retro_frame *f, int ua, int ub)
-{
-    g->rxa = f->rx[ua];
-    g->rya = f->ry[ua];
-    g->rxb = f->rx[ub];
-    g->ryb = f->ry[ub];
-    const float gx = fabsf(g->rxb - g->rxa), gy = fabsf(g->ryb - g->rya);
-    g->g = gx > gy ? gx : gy;
-    float r = fmaxf(fmaxf(fabsf(g->rxa), fabsf(g->rya)), fmaxf(fabsf(g->rxb), fabsf(g->ryb)));
-    g->inv_rg = 1.0f / (r + g->g + 0.25f); /* r > 0.7 in fact; the 0.25 keeps it finite anyway */
-    g->level = RETRO_PYR_LMIN;
-}
-
-/* The first distance in [d, d_end) at which some column ua..ub (given to retro_skip_grp_init)
- * may rise above its y-buffer, when y is the smallest y-buffer of those columns and y < H;
- * d_end when none may. Every distance it skips has v <= y <= each column's y-buffer in every
- * column of the group, so no lane paints there. Mode exact without bilinear.
- *
- * Proof: retro_skip_column's, with the box of the run taken over the group as well.
- * Columns. rx_u = cs + t_u * sn with t_u = (float)(2(u-1) - (W-1)) / (float)(W-1) (frame.c):
- * the numerator is an exact integer increasing in u, and the conversion, the division by a
- * positive float, the product by sn and the sum with cs are each monotone (rounding to nearest
- * is monotone), so rx_u is monotone in u; ry_u = t_u * cs - sn alike. For a fixed distance e,
- * (float)e > 0, so qx(u, e) = x0 + (float)e * rx_u is monotone in u too, and for a fixed u it
- * is monotone in e (retro_skip_column, 1). Hence for u in [ua, ub] and e in [d, d1],
- * qx(u, e) >= min(qx(ua, e), qx(ub, e)) >= the least of the four corners qx(ua|ub, d|d1), and
- * likewise <= the greatest: floor is monotone, so every floor(qx) the group reads lies in
- * [Imin, Imax] of the four corners' floors, computed here with the kernel's operations, and
- * floor(qy) in [Jmin, Jmax]. When both spans are <= B, the window lemma bounds every height
- * of the group's run by the one window M; the row argument (retro_skip_column, 3 and 4) then
- * shows v <= y for every sample of every column. Lanes past the group's last column are not
- * columns of the frame: the kernels keep their y-buffers at H, so they never paint and do not
- * lower y.
- * Levels: a level too fine for the group's width at d (d * g > B - 1) cannot hold any run, so
- * the probe goes up from it and never goes down to it; otherwise as retro_skip_column. */
-static inline __attribute__((always_inline, unused)) int
-retro_skip_group(const retro_pyramid *p, const retro_frame *f, retro_skip_grp *g, int d, int d_end, int y,
-                 const int pow2)
-{
-    const int S = f->S, lmax = p->lmax;
-    const float x0 = f->x0, y0 = f->y0, half_h = f->half_h, need = (float)(y + 1);
-    const int64_t height = f->height;
-    int L = g->level, at = 0, Ia0 = 0, Ja0 = 0, Ib0 = 0, Jb0 = 0; /* corners at distance at */
-    int tries = RETRO_SKIP_GROUP_TRIES; /* windows that may fail before the probe gives up */
-#ifdef RETRO_COUNT_SAMPLES
-    retro_simd_counts.probes++;
-#endif
-    while (d < d_end) {
-#ifdef RETRO_COUNT_SAMPLES
-        retro_simd_counts.windows++;
-#endif
-        const int B = 1 << L;
-        const float spread = (float)d * g->g, avail = (float)(B - 1) - spread;
-        if (!(avail >= 0.0f)) { /* the group is wider than a block here */
-            if (L >= lmax)
-                break;
-            L++;
-            continue;
-        }
-        const int len = 1 + (int)(avail * g->inv_rg);
-        const int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
-        if (at != d) {
-            const float f0 = (float)d;
-            Ia0 = retro_floor(x0 + f0 * g->rxa);
-            Ja0 = retro_floor(y0 + f0 * g->rya);
-            Ib0 = retro_floor(x0 + f0 * g->rxb);
-            Jb0 = retro_floor(y0 + f0 * g->ryb);
-            at = d;
-        }
-        const float f1 = (float)d1;
-        const int Ia1 = retro_floor(x0 + f1 * g->rxa), Ja1 = retro_floor(y0 + f1 * g->rya);
-        const int Ib1 = retro_floor(x0 + f1 * g->rxb), Jb1 = retro_floor(y0 + f1 * g->ryb);
-        int Imin = Ia0, Imax = Ia0, Jmin = Ja0, Jmax = Ja0;
-        Imin = Ib0 < Imin ? Ib0 : Imin;
-        Imin = Ia1 < Imin ? Ia1 : Imin;
-        Imin = Ib1 < Imin ? Ib1 : Imin;
-        Imax = Ib0 > Imax ? Ib0 : Imax;
-        Imax = Ia1 > Imax ? Ia1 : Imax;
-        Imax = Ib1 > Imax ? Ib1 : Imax;
-        Jmin = Jb0 < Jmin ? Jb0 : Jmin;
-        Jmin = Ja1 < Jmin ? Ja1 : Jmin;
-        Jmin = Jb1 < Jmin ? Jb1 : Jmin;
-        Jmax = Jb0 > Jmax ? Jb0 : Jmax;
-        Jmax = Ja1 > Jmax ? Ja1 : Jmax;
-        Jmax = Jb1 > Jmax ? Jb1 : Jmax;
-        if (Imax - Imin <= B && Jmax - Jmin <= B) {
-            const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
-            const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
-            const float fdh = (float)((int64_t)M - height);
-            const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;
-            if (!(vf >= need)) {
-                d = d1 + 1;
-                if (L < lmax)
-                    L++;
-                continue;
-            }
-        }
-        if (L == RETRO_PYR_LMIN || (float)((1 << (L - 1)) - 1) < spread || --tries == 0)
-            break;
-        L--;
-    }
-    g->level = L;
-    return d;
-}
 
 #endif

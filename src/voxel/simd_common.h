@@ -12,55 +12,10 @@
 #include "retro_internal.h"
 #include "retro_scene.h"
 
-/* Occlusion skipping (docs/SKIPPING.md, "The SIMD strips"): a group of lanes probes the
- * pyramid with the smallest y-buffer of its columns (retro_skip_group). The submission has no
- * pyramid (its frames never carry one), so there the probe is compiled out. */
+/* Occlusion skipping (docs/SKIPPING.md, "The SIMD strips"): the group probe is
+ * simd_skip_tpl.h's. The submission has no pyramid (its frames never carry one). */
 #ifndef RETRO_SUBMISSION
 #include "hmax_pyramid.h"
-#ifndef RETRO_SIMD_SKIP_SUB
-#define RETRO_SIMD_SKIP_SUB 16 /* columns per box: narrower boxes reach finer, tighter levels */
-#endif
-/* A group of up to 16 lanes probes as sub-groups of RETRO_SIMD_SKIP_SUB adjacent columns, each
- * with its own box, level and smallest y-buffer: the group may skip [d, e) when every
- * sub-group may, e the least of their answers. A sub-group all of whose columns reached
- * vcap[d] paints nothing from d on (the early exit's own argument) and is left out. */
-typedef struct retro_simd_grp {
-    retro_skip_grp g[16 / RETRO_SIMD_SKIP_SUB];
-    int k, n; /* sub-groups, live lanes */
-} retro_simd_grp;
-
-static inline void retro_simd_grp_init(retro_simd_grp *s, const retro_frame *f, int u0, int n)
-{
-    s->n = n;
-    s->k = (n + RETRO_SIMD_SKIP_SUB - 1) / RETRO_SIMD_SKIP_SUB;
-    for (int i = 0; i < s->k; i++) {
-        int ua = u0 + i * RETRO_SIMD_SKIP_SUB, ub = ua + RETRO_SIMD_SKIP_SUB - 1;
-        retro_skip_grp_init(&s->g[i], f, ua, ub < u0 + n ? ub : u0 + n - 1);
-    }
-}
-
-/* The first distance >= d at which some lane may paint, ys the lanes' y-buffers; some live
- * lane has ys < vcap[d] <= H. */
-static inline __attribute__((always_inline)) int retro_simd_probe(retro_simd_grp *s, const retro_frame *f, int d,
-                                                                  const int *ys, const int pow2)
-{
-    int e = f->D;
-    for (int i = 0; i < s->k && e > d; i++) {
-        int y = ys[i * RETRO_SIMD_SKIP_SUB];
-        for (int l = i * RETRO_SIMD_SKIP_SUB + 1; l < (i + 1) * RETRO_SIMD_SKIP_SUB && l < s->n; l++)
-            y = ys[l] < y ? ys[l] : y;
-        if (y >= f->vcap[d])
-            continue;
-        e = retro_skip_group(f->pyr, f, &s->g[i], d, e, y, pow2);
-    }
-    return e;
-}
-#define RETRO_SIMD_GRP_INIT(g, f, u0, n) retro_simd_grp_init((g), (f), (u0), (n))
-#define RETRO_SIMD_PROBE(g, f, d, ys, pow2) retro_simd_probe((g), (f), (d), (ys), (pow2))
-#else
-typedef int retro_simd_grp;
-#define RETRO_SIMD_GRP_INIT(g, f, u0, n) ((void)(g), (void)(f), (void)(u0), (void)(n))
-#define RETRO_SIMD_PROBE(g, f, d, ys, pow2) ((void)(g), (void)(ys), (d))
 #endif
 
 /* The packed map is tiled: 4x4 cells of 4 bytes fill one 64-byte line, so the 16 columns of a

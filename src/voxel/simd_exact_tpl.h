@@ -35,8 +35,8 @@ static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
 /* Columns u0..u0+width-1 (width <= SIMD_LANES), front to back: docs/KERNELS.md's mode exact.
  * Lanes past width start full (y = H), so they neither paint nor hold the group back. The n-th
  * distance is n, or dist[n] in mode lod (lod), where vcap is indexed by n as well. With skip,
- * the group probes the pyramid with its smallest y-buffer (simd_common.h's schedule) and jumps
- * over the distances retro_skip_group proves no lane paints; s then holds a distance the loop
+ * the group probes the pyramid, every lane with its own y-buffer (simd_skip_tpl.h, on
+ * simd_common.h's schedule), and jumps over the distances no lane can paint in; s then holds a distance the loop
  * no longer wants, and sn says which. */
 RETRO_SIMD_INLINE void
 SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
@@ -51,17 +51,18 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
     /* mode lod: dist[n] exists for n < n_end only; a sample past it is loaded but never used */
 #define SIMD_DIST(n) (lod ? f->dist[(n) < n_end ? (n) : 1] : (n))
     SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 ? SIMD_DIST(1) : 1, &s, pow2, packed, bilinear);
-    retro_simd_grp g;
-    int sn = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+#ifndef RETRO_SUBMISSION
+    SIMD_NAME(skip_t) g;
     if (skip)
-        RETRO_SIMD_GRP_INIT(&g, f, u0, width);
+        SIMD_NAME(skip_init)(&g, f, u0, width);
+#endif
+    int sn = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
     for (int n = 1; n < n_end;) {
         if (!v_bits(v_igt(v_set1_i(f->vcap[n]), y)))
             break;
-        if (skip && n >= probe) { /* some lane has y < vcap[n] <= H, so the minimum is < H */
-            int ys[SIMD_LANES];
-            v_store_i(ys, y);
-            const int e = RETRO_SIMD_PROBE(&g, f, n, ys, pow2);
+#ifndef RETRO_SUBMISSION
+        if (skip && n >= probe) { /* some lane has y < vcap[n] <= H */
+            const int e = SIMD_NAME(skip_probe)(f, k, &g, rx, ry, y, n, n_end, pow2);
             if (e > n) {
                 n = e;
                 probe = e;
@@ -71,6 +72,7 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
             probe = n + batch;
             batch = batch < RETRO_SIMD_SKIP_FAR ? 2 * batch : batch;
         }
+#endif
         const int d = SIMD_DIST(n);
         if (skip && sn != n)
             SIMD_NAME(sample)(f, sf, k, rx, ry, d, &s, pow2, packed, bilinear);

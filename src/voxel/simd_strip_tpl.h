@@ -24,7 +24,7 @@
  *   v_floor_f(q) v_trunc_f(q)      floor and truncation in float (|q| < 2^31)
  *   v_floor_i(q) v_cvtt_i(q)       floor and truncation to int32; v_cvt_f(i): int32 to float
  *   v_add_i v_sub_i v_mullo_i v_and_i v_or_i v_min_i v_max_i (a, b)   int32 lane operations
- *   v_srli_i(a, n) v_slli_i(a, n)  shifts by a constant
+ *   v_srli_i(a, n) v_slli_i(a, n)  shifts by a constant; v_srl_i(a, n): by an int, every lane
  *   v_flt v_fle v_fgt v_fge (a, b) float compares, v_igt(a, b) int32 compare: masks
  *   v_mand(a, b) v_mandnot(a, b)   a & b, ~a & b on masks
  *   v_add_where(m, a, b) v_sub_where(m, a, b)   a + b (a - b) in the lanes of m, a elsewhere
@@ -62,9 +62,10 @@ retro_sample_counts retro_simd_counts;
 #define SIMD_COUNT_LANES(field, n) ((void)0)
 #endif
 
-/* The parts, in order: what a sample reads and computes, the group of mode exact and lod,
- * the column of mode course. */
+/* The parts, in order: what a sample reads and computes, the group's occlusion probe, the
+ * group of mode exact and lod, the column of mode course. */
 #include "simd_sample_tpl.h"
+#include "simd_skip_tpl.h"
 #include "simd_exact_tpl.h"
 #include "simd_course_tpl.h"
 
@@ -77,7 +78,7 @@ retro_sample_counts retro_simd_counts;
                                 const SIMD_NAME(consts) *k, int u0, int u1)                              \
     {                                                                                                    \
         const int can_skip = !(lod) && !(bilinear);                                                      \
-        if (can_skip && f->simd_skip)                                                                    \
+        if (can_skip && f->pyr)                                                                    \
             for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
                 SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
                                        packed, fog, can_skip, lod, bilinear);                            \
@@ -204,6 +205,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef v_min_i
 #undef v_max_i
 #undef v_srli_i
+#undef v_srl_i
 #undef v_slli_i
 #undef v_flt
 #undef v_fle

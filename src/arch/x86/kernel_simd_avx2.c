@@ -49,6 +49,7 @@
 #define v_min_i(a, b) _mm256_min_epi32(a, b)
 #define v_max_i(a, b) _mm256_max_epi32(a, b)
 #define v_srli_i(a, n) _mm256_srli_epi32(a, n)
+#define v_srl_i(a, n) _mm256_srl_epi32(a, _mm_cvtsi32_si128(n))
 #define v_slli_i(a, n) _mm256_slli_epi32(a, n)
 #define v_flt(a, b) AVX2_FM(_mm256_cmp_ps(a, b, _CMP_LT_OQ))
 #define v_fle(a, b) AVX2_FM(_mm256_cmp_ps(a, b, _CMP_LE_OQ))

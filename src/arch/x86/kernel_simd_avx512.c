@@ -42,6 +42,7 @@
 #define v_min_i(a, b) _mm512_min_epi32(a, b)
 #define v_max_i(a, b) _mm512_max_epi32(a, b)
 #define v_srli_i(a, n) _mm512_srli_epi32(a, n)
+#define v_srl_i(a, n) _mm512_srl_epi32(a, _mm_cvtsi32_si128(n))
 #define v_slli_i(a, n) _mm512_slli_epi32(a, n)
 #define v_flt(a, b) _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ)
 #define v_fle(a, b) _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ)
