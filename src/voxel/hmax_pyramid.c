@@ -116,7 +116,9 @@ int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S)
         total += (size_t)p->n[L] * (size_t)p->n[L];
     }
     size_t n0 = (size_t)p->n[RETRO_PYR_LMIN] * (size_t)p->n[RETRO_PYR_LMIN];
-    size_t need = total + 2 * n0; /* the windows, then two scratch planes */
+    /* the windows, then two scratch planes, which also give the SIMD probe's 4-byte reads of a
+     * window (v_gather_bytes_pad, simd_skip_tpl.h) the 3 bytes of slack they need: n0 >= 4 */
+    size_t need = total + 2 * n0;
     if (need > p->cap) {
         uint8_t *m = realloc(p->mem, need);
         if (!m)

@@ -77,7 +77,7 @@ RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAM
         const simd_i32 cj = pow2 ? SIMD_NAME(wrap_pow2)(my, k) : SIMD_NAME(wrap_any)(my, k);
         const simd_i32 idx = v_add_i(v_add_i(v_mullo_i(v_srl_i(cj, L), v_set1_i(p->n[L])), v_srl_i(ci, L)),
                                      v_set1_i((int)(p->win[L] - base)));
-        const simd_i32 M = v_gather_bytes(base, idx);
+        const simd_i32 M = v_gather_bytes_pad(base, idx);
         const simd_f32 dh = v_cvt_f(v_sub_i(M, k->height));
         const simd_f32 vf = v_max_f(v_add_f(v_mul_f(v_set1_f(f->kd[d]), dh), k->half_h),
                                     v_add_f(v_mul_f(v_set1_f(f->kd[d1]), dh), k->half_h));

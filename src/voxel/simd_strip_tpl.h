@@ -35,6 +35,7 @@
  *                                  (m = v_first(n)); lanes past them load 0 and do not store
  *   v_store_i(p, a)                all lanes to int p[SIMD_LANES]
  *   v_gather_cells(c, idx) v_gather_bytes(h, idx)   c[idx] (uint32), h[idx] (uint8) per lane
+ *   v_gather_bytes_pad(h, idx)     h[idx] (uint8) per lane, free to read h[idx + 1..idx + 3] too
  *   v_gather_colours(c, at, m)     c[at] (uint32) in the lanes of m at least
  *   v_sub_f64(a, h)                (float)((double)a - h) per lane: one rounding in double, one to
  *                                  float (bilinear's height difference, docs/EFFECTS.md)
@@ -226,6 +227,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef v_store_i
 #undef v_gather_cells
 #undef v_gather_bytes
+#undef v_gather_bytes_pad
 #undef v_last_i
 #undef v_sub_f64
 #undef V_SHIFT_UP

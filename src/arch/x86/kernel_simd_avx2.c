@@ -70,6 +70,7 @@
 #define v_store_i(p, a) _mm256_storeu_si256((__m256i *)(p), a)
 #define v_gather_cells(c, idx) SIMD_NAME(gather_cells)(c, idx)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_gather_bytes_pad(h, idx) SIMD_NAME(gather_bytes)(h, idx)
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm256_extract_epi32(a, 7)
 #define V_SHIFT_UP(p, fill, k)                                                                           \

@@ -63,6 +63,7 @@
 #define v_store_i(p, a) _mm512_storeu_si512(p, a)
 #define v_gather_cells(c, idx) _mm512_i32gather_epi32(idx, (const void *)(c), 4)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_gather_bytes_pad(h, idx) _mm512_and_si512(_mm512_i32gather_epi32(idx, (const void *)(h), 1), _mm512_set1_epi32(0xff))
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_alignr_epi32(a, a, 15)))
 #define V_SHIFT_UP(p, fill, k) _mm512_alignr_epi32(p, fill, 16 - (k))

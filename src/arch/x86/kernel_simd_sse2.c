@@ -65,6 +65,7 @@
 #define v_store_i(p, a) _mm_storeu_si128((__m128i *)(p), a)
 #define v_gather_cells(c, idx) SIMD_NAME(gather_cells)(c, idx)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
+#define v_gather_bytes_pad(h, idx) SIMD_NAME(gather_bytes)(h, idx)
 #define v_gather_colours(c, at, m) ((void)(m), SIMD_NAME(gather_cells)(c, at)) /* every lane */
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm_shuffle_epi32(a, _MM_SHUFFLE(3, 3, 3, 3)))
