@@ -62,7 +62,7 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
             break;
 #ifndef RETRO_SUBMISSION
         if (skip && n >= probe) { /* some lane has y < vcap[n] <= H */
-            const int e = SIMD_NAME(skip_probe)(f, k, &g, rx, ry, y, n, n_end, pow2);
+            const int e = SIMD_NAME(skip_probe)(f, k, &g, rx, ry, y, n, n_end, pow2, bilinear, lod);
             if (e > n) {
                 n = e;
                 probe = e;

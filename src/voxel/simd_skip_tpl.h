@@ -22,8 +22,9 @@ static inline void SIMD_NAME(skip_init)(SIMD_NAME(skip_t) *g, const retro_frame 
     g->level = RETRO_PYR_LMIN;
 }
 
-/* The first distance in [d, d_end) at which some lane may rise above its y-buffer; d_end when
- * none may. rx, ry are the lanes' rays (lanes past the group's width: 0, and y = H there).
+/* The first index in [n, n_end) at which some lane may rise above its y-buffer; n_end when
+ * none may. The n-th distance is n, or dist[n] in mode lod (lod). rx, ry are the lanes' rays
+ * (lanes past the group's width: 0, and y = H there).
  *
  * Proof: per lane, retro_skip_run's for that lane's column (hmax_pyramid.h, points 1 to 4):
  * the positions at d and d1 are computed with sample()'s very operations, v_floor_i is
@@ -38,39 +39,54 @@ static inline void SIMD_NAME(skip_init)(SIMD_NAME(skip_t) *g, const retro_frame 
  * lanes past the width have y = H >= vcap. If every other lane's box fits a block and its
  * bound stays <= its y, no lane paints in [d, d1] and their y-buffers are unchanged there, so
  * the run is skipped for the whole group; each lane's proof holds alone, with its own y.
+ * Bilinear and mode lod as in retro_skip_run: the box is of the floors of q - 1/2 computed as
+ * sample() does, one cell wider, bounded by M + 1 through the sample's own dh; a run of lod
+ * indices samples distances between dist[n] and dist[n1] only, and kd is indexed by distance.
  * Levels: up after a skip, down after a run some lane may paint in, and the probe gives up at
  * RETRO_PYR_LMIN or after RETRO_SKIP_GROUP_TRIES failing windows. */
 RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAME(consts) *k, SIMD_NAME(skip_t) *g,
-                                            simd_f32 rx, simd_f32 ry, simd_i32 y, int d, int d_end,
-                                            const int pow2)
+                                            simd_f32 rx, simd_f32 ry, simd_i32 y, int n, int n_end,
+                                            const int pow2, const int bilinear, const int lod)
 {
     const retro_pyramid *p = f->pyr;
     const uint8_t *base = p->win[RETRO_PYR_LMIN];
     const simd_i32 need = v_add_i(y, v_set1_i(1));
-    /* lanes that can still paint somewhere from d on */
-    const simd_mask open = v_igt(v_set1_i(f->vcap[d]), y);
-    const simd_f32 fneed = v_cvt_f(need);
+    /* lanes that can still paint somewhere from n on */
+    const simd_mask open = v_igt(v_set1_i(f->vcap[n]), y);
+    const simd_f32 fneed = v_cvt_f(need), half = v_set1_f(0.5f);
     int L = g->level, tries = RETRO_SKIP_GROUP_TRIES;
     simd_f32 qx0 = v_zero_f(), qy0 = v_zero_f();
-    int at = 0; /* the distance qx0, qy0 are of (0: none yet) */
+    int at = 0; /* the index qx0, qy0 are of (0: none yet) */
     SIMD_COUNT_LANES(probes, 1);
-    while (d < d_end) {
+    while (n < n_end) {
         SIMD_COUNT_LANES(windows, 1);
         const int B = 1 << L;
-        const int len = 1 + (int)((float)(B - 1) * g->inv_r);
-        const int d1 = d_end - 1 - d < len - 1 ? d_end - 1 : d + len - 1;
-        if (at != d) {
+        /* a bilinear sample reads one cell more per axis: the estimate leaves room for it */
+        int len = 1 + (int)((float)(B - 1 - bilinear) * g->inv_r);
+        if (lod && n + 1 < n_end) /* in indices, by the step at n (steps never shrink) */
+            len = 1 + (len - 1) / (f->dist[n + 1] - f->dist[n]);
+        const int n1 = n_end - 1 - n < len - 1 ? n_end - 1 : n + len - 1;
+        const int d = lod ? f->dist[n] : n, d1 = lod ? f->dist[n1] : n1;
+        if (at != n) {
             const simd_f32 f0 = v_set1_f((float)d);
             qx0 = v_add_f(k->x0, v_mul_f(f0, rx));
             qy0 = v_add_f(k->y0, v_mul_f(f0, ry));
-            at = d;
+            if (bilinear) { /* the sample's own q - 1/2 */
+                qx0 = v_sub_f(qx0, half);
+                qy0 = v_sub_f(qy0, half);
+            }
+            at = n;
         }
         const simd_f32 f1 = v_set1_f((float)d1);
-        const simd_f32 qx1 = v_add_f(k->x0, v_mul_f(f1, rx)), qy1 = v_add_f(k->y0, v_mul_f(f1, ry));
+        simd_f32 qx1 = v_add_f(k->x0, v_mul_f(f1, rx)), qy1 = v_add_f(k->y0, v_mul_f(f1, ry));
+        if (bilinear) {
+            qx1 = v_sub_f(qx1, half);
+            qy1 = v_sub_f(qy1, half);
+        }
         const simd_i32 I0 = v_floor_i(qx0), I1 = v_floor_i(qx1), J0 = v_floor_i(qy0), J1 = v_floor_i(qy1);
         const simd_i32 wi = v_max_i(v_sub_i(I1, I0), v_sub_i(I0, I1));
         const simd_i32 wj = v_max_i(v_sub_i(J1, J0), v_sub_i(J0, J1));
-        const simd_i32 B1 = v_set1_i(B + 1);
+        const simd_i32 B1 = v_set1_i(B + 1 - bilinear); /* with bilinear, the span + 1 <= B */
         const simd_mask fits = v_mand(v_igt(B1, wi), v_igt(B1, wj));
         const simd_f32 mx = v_min_f(qx0, qx1), my = v_min_f(qy0, qy1);
         const simd_i32 ci = pow2 ? SIMD_NAME(wrap_pow2)(mx, k) : SIMD_NAME(wrap_any)(mx, k);
@@ -78,13 +94,15 @@ RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAM
         const simd_i32 idx = v_add_i(v_add_i(v_mullo_i(v_srl_i(cj, L), v_set1_i(p->n[L])), v_srl_i(ci, L)),
                                      v_set1_i((int)(p->win[L] - base)));
         const simd_i32 M = v_gather_bytes_pad(base, idx);
-        const simd_f32 dh = v_cvt_f(v_sub_i(M, k->height));
+        /* bilinear: the sample's own dh (v_sub_f64) of M + 1, above any filtered height */
+        const simd_f32 dh = bilinear ? v_sub_f64(v_cvt_f(v_add_i(M, v_set1_i(1))), (double)f->height)
+                                     : v_cvt_f(v_sub_i(M, k->height));
         const simd_f32 vf = v_max_f(v_add_f(v_mul_f(v_set1_f(f->kd[d]), dh), k->half_h),
                                     v_add_f(v_mul_f(v_set1_f(f->kd[d1]), dh), k->half_h));
         /* a lane stays below when its box fits and !(vf >= need), the sample kernel's test */
         const simd_mask may = v_mandnot(v_mandnot(v_fge(vf, fneed), fits), open);
         if (!v_bits(may)) {
-            d = d1 + 1;
+            n = n1 + 1;
             if (L < p->lmax)
                 L++;
             continue;
@@ -94,7 +112,7 @@ RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAM
         L--;
     }
     g->level = L;
-    return d;
+    return n;
 }
 
 #endif

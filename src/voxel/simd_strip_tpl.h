@@ -71,18 +71,16 @@ retro_sample_counts retro_simd_counts;
 #include "simd_course_tpl.h"
 
 /* One instantiation per (lod, bilinear, fog, power-of-two S, packed map), so the inner loops
- * carry no tests of them; skipping (f->simd_skip, opt-in: docs/SKIPPING.md, mode exact without
- * bilinear) is one more. The bilinear ones test the packed map per sample: four loads each
- * outweigh it. */
+ * carry no tests of them; occlusion skipping (a frame with a pyramid, docs/SKIPPING.md) is one
+ * more. The bilinear ones test the packed map per sample: four loads each outweigh it. */
 #define SIMD_EXACT_STRIP(name, lod, bilinear, fog, pow2, packed)                                        \
     static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf,                       \
                                 const SIMD_NAME(consts) *k, int u0, int u1)                              \
     {                                                                                                    \
-        const int can_skip = !(lod) && !(bilinear);                                                      \
-        if (can_skip && f->pyr)                                                                    \
+        if (f->pyr)                                                                                      \
             for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
                 SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
-                                       packed, fog, can_skip, lod, bilinear);                            \
+                                       packed, fog, 1, lod, bilinear);                                   \
         else                                                                                             \
             for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
                 SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
