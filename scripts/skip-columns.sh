@@ -21,12 +21,32 @@ if ! command -v gnuplot >/dev/null 2>&1; then
   echo "note: gnuplot not found (make deps): no skip-columns chart" >&2
   exit 0
 fi
-gp=$(dirname "$0")/skip-columns.gp
-gnuplot -e "term=\"svg size 800,450 dynamic background rgb 'white'\"; ext='svg'; out='$out'; frame='$frame'" "$gp"
+# The chart, given to gnuplot on stdin so no helper file is left beside the results; term, ext,
+# out and frame are set on its command line.
+plot() {
+  cat <<'EOF'
+eval('set terminal '.term)
+set termoption noenhanced
+set encoding utf8
+set datafile separator ','
+set output out.'/skip-columns.'.ext
+set title "Samples the ybuffer kernel evaluates, per screen column\n".frame
+set xlabel 'screen column'
+set ylabel "share of the column's samples (%)"
+set yrange [0:105]
+set autoscale xfix
+set grid
+set key below horizontal
+plot out.'/skip-columns.csv' every ::1 using 1:(100.0 * $5 / $2) with lines lw 2 lc rgb '#999999' title 'evaluated without skipping', \
+  '' every ::1 using 1:(100.0 * $3 / $2) with lines lw 2 lc rgb '#1f77b4' title 'evaluated with skipping', \
+  '' every ::1 using 1:(100.0 * $4 / $2) with lines lw 2 lc rgb '#d62728' title 'painting (either way)'
+EOF
+}
+plot | gnuplot -e "term=\"svg size 800,450 dynamic background rgb 'white'\"; ext='svg'; out='$out'; frame='$frame'" -
 made="$out/skip-columns.svg"
 for t in pngcairo png; do
   if gnuplot -e "set terminal $t" </dev/null >/dev/null 2>&1; then
-    gnuplot -e "term='$t size 800,450'; ext='png'; out='$out'; frame='$frame'" "$gp"
+    plot | gnuplot -e "term='$t size 800,450'; ext='png'; out='$out'; frame='$frame'" -
     made="$made and .png ($t)"
     break
   fi
