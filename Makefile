@@ -290,11 +290,12 @@ $(BENCH_BIN): $(BENCH_OBJ) $(COURSE_LIB) $(LIB)
 	$(Q)$(CXX) $(SAN) -o $@ $(BENCH_OBJ) $(COURSE_LIB) $(LIB) $(shell pkg-config --libs $(BENCH_PKGS)) -lpthread $(LDLIBS)
 
 .PHONY: bench
-bench: deps ## time every kernel (mode exact also with skipping off), scene and mode: RESULTS/BENCH.md, bench.json, charts (QUICK=1)
+bench: deps ## time every kernel (mode exact also with skipping off), scene and mode: RESULTS/BENCH.md, bench.json, charts, skip-columns (QUICK=1)
 	$(Q)$(MAKE) --no-print-directory $(RETRO) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) $(RESULTS) $(BUILD)/bench-charts.gp \
 	  $(if $(filter-out 0,$(QUICK)),--quick) --no-skip $(BENCH_ARGS)
+	$(Q)sh scripts/skip-columns.sh $(RETRO) $(RESULTS)
 # --- end of benchmark block ---------------------------------------------------------------
 
 ACCURACY_ARGS ?=

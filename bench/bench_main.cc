@@ -22,6 +22,7 @@ extern "C" {
 #include "pin.h"
 #include "progress_reporter.h"
 #include "run_context.h"
+#include "skip_large.h"
 
 // The case being timed keeps one context and one frame across all its runs (warm-up,
 // iteration-count probing, repetitions), so nothing is allocated per frame; moving to the
@@ -207,6 +208,7 @@ int main(int argc, char **argv)
     if (!opt.no_extras && opt.scene.empty())
         plan_extras(&plan);
     plan_peer(&plan);
+    plan_skip_large(&plan);
     plan_mesh(&plan, quick);
     for (const auto &c : plan.cases) {
         auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
@@ -215,6 +217,8 @@ int main(int argc, char **argv)
             b->UseRealTime(); // CPU time is this thread's alone and misses the workers
         if (c->groups & GROUP_MESH)
             b->Iterations(MESH_ITERATIONS)->Repetitions(quick ? MESH_QUICK_REPETITIONS : MESH_REPETITIONS);
+        else if (c->repetitions)
+            b->Repetitions(c->repetitions);
     }
 
     context_publish(ctx);

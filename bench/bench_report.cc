@@ -4,6 +4,7 @@
 #include "extras.h"
 #include "mesh_cases.h"
 #include "peer_cases.h"
+#include "skip_large.h"
 
 #include <algorithm>
 #include <array>
@@ -199,6 +200,7 @@ bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunCon
                         ": median ms/frame",
                     heads, points);
     }
+    skip_large_table(o, plan);
     extras_tables(o, plan);
     peer_table(o, plan);
     mesh_table(o, plan);

@@ -34,8 +34,8 @@ std::vector<int> plan_thread_counts(const retro_kernel *k, int cores)
     return t;
 }
 
-static void add1(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
-                 retro_mode mode, int w, int h, int d, unsigned group, bool no_skip)
+void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
+                   retro_mode mode, int w, int h, int d, unsigned group, bool no_skip)
 {
     for (auto &have : plan->cases)
         if (same(*have, k, threads, s, mode, w, h, d, no_skip)) {
@@ -64,9 +64,9 @@ static void add1(BenchPlan *plan, const retro_kernel *k, int threads, const benc
 static void add(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
                 retro_mode mode, int w, int h, int d, unsigned group)
 {
-    add1(plan, k, threads, s, mode, w, h, d, group, false);
+    plan_add_case(plan, k, threads, s, mode, w, h, d, group, false);
     if (plan->no_skip_twins && mode == RETRO_MODE_EXACT && std::string(k->name) != "naive")
-        add1(plan, k, threads, s, mode, w, h, d, group, true);
+        plan_add_case(plan, k, threads, s, mode, w, h, d, group, true);
 }
 
 void plan_cases(BenchPlan *plan)

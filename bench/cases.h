@@ -23,6 +23,7 @@ enum : unsigned {
     GROUP_PEER = 1u << 5,       // peer_cases.cc: the classic demo's algorithm, not a kernel
     GROUP_MESH = 1u << 6,       // mesh_cases.cc: the mesh family's kernels, mode binary32
     GROUP_MESH_SWEEP = 1u << 7, // mesh_cases.cc: the mesh kernels swept over resolution, distance
+    GROUP_SKIP_LARGE = 1u << 8, // skip_large.cc: omp with and without skipping at a large frame
 };
 
 struct BenchCase {
@@ -40,12 +41,16 @@ struct BenchCase {
     void (*direct)(const player_t *, ctx_t *) = nullptr;
     const retro_effects *fx = nullptr;
     std::string label;           // the row's name in its extra table
+    int repetitions = 0;         // its own repetition count; 0: the run's --benchmark_repetitions
 
     // Filled by the reporter once the case has run.
     bool ran = false;
     double median_ms = std::numeric_limits<double>::quiet_NaN(); // median ms/frame
     double samples = std::numeric_limits<double>::quiet_NaN();   // evaluated per frame (counted)
     double cv = std::numeric_limits<double>::quiet_NaN();        // spread over repetitions
+    int reps = 0;                // repetitions that ran, and their least and greatest ms/frame
+    double rep_min = std::numeric_limits<double>::quiet_NaN();
+    double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
     // Mesh cases: the frame's counts (retro_mesh_stats), the same every frame of the case.
     mutable double tri_submitted = std::numeric_limits<double>::quiet_NaN();
@@ -74,5 +79,9 @@ std::vector<int> plan_thread_counts(const retro_kernel *k, int cores);
 
 // Fills plan->cases from the kernel table, the modes, scenes and sweep lists already in plan.
 void plan_cases(BenchPlan *plan);
+
+// Adds one kernel case to group (the case itself when planned already: it joins group).
+void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s, retro_mode mode,
+                   int W, int H, int D, unsigned group, bool no_skip);
 
 #endif

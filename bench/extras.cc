@@ -75,8 +75,9 @@ void plan_extras(BenchPlan *plan)
     for (const bench_scene *s : plan->scenes)
         if (!std::strcmp(s->origin, "course")) {
             add(plan, &painter_row, 1, s, RETRO_MODE_COURSE, GROUP_SUBMISSION, "painter")->direct = painter_render;
-            add(plan, &submission_row, plan->cores, s, RETRO_MODE_COURSE, GROUP_SUBMISSION, "submission")->direct =
-                submission_render;
+            BenchCase *sub = add(plan, &submission_row, plan->cores, s, RETRO_MODE_COURSE, GROUP_SUBMISSION, "submission");
+            sub->direct = submission_render;
+            sub->repetitions = SUBMISSION_RUNS;
         }
     const bench_scene *islands = nullptr;
     for (const bench_scene *s : plan->scenes)
@@ -135,9 +136,12 @@ static void submission_table(std::ostream &o, const BenchPlan &plan)
         if (!any) {
             o << "\n### The course submission (mode course, " << plan.W << "×" << plan.H << ", D " << plan.D
               << ")\n\nmedian ms/frame; `make submission`'s render.c and the plain course painter both built "
-                 "alone with the course's `-O3`, the others with the suite's flags.\n\n"
+                 "alone with the course's `-O3`, the others with the suite's flags. Spread: the submission's "
+                 "(max − min) / median over its runs (repetitions in this process, each the mean ms/frame of "
+                 "its iterations); issue 18's target is at most 15% across " << SUBMISSION_RUNS << " runs.\n\n"
               << "| scene | course painter (-O3) | naive | " << best->name << ", " << plan.cores
-              << " threads | submission (-O3) | submission vs painter |\n|---|--:|--:|--:|--:|--:|\n";
+              << " threads | submission (-O3) | submission vs painter | submission spread | runs |\n"
+                 "|---|--:|--:|--:|--:|--:|--:|--:|\n";
             any = true;
         }
         const BenchCase *sub = find(plan, GROUP_SUBMISSION, s, "submission", &submission_row);
@@ -147,8 +151,11 @@ static void submission_table(std::ostream &o, const BenchPlan &plan)
         char ratio[32] = "–";
         if (!std::isnan(p) && !std::isnan(q))
             std::snprintf(ratio, sizeof ratio, "%.1f×", p / q);
+        char spread[32] = "–";
+        if (!std::isnan(q) && sub->reps > 1)
+            std::snprintf(spread, sizeof spread, "%.1f%%", 100 * (sub->rep_max - sub->rep_min) / q);
         o << "| " << s->name << " | " << report_ms_cell(p) << " | " << report_ms_cell(ms_of(naive)) << " | " << report_ms_cell(ms_of(fast)) << " | "
-          << report_ms_cell(q) << " | " << ratio << " |\n";
+          << report_ms_cell(q) << " | " << ratio << " | " << spread << " | " << (std::isnan(q) ? 0 : sub->reps) << " |\n";
     }
 }
 

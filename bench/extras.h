@@ -8,6 +8,10 @@
 
 #include "cases.h"
 
+// Runs (repetitions) of each submission case: issue 18 bounds the spread of its time across 10
+// runs, (max - min) / median, which BENCH.md's submission table reports.
+enum { SUBMISSION_RUNS = 10 };
+
 // Adds the extra cases for the plan's scenes: the submission table on the course scenes, the
 // effect table on islands. Call after plan_cases().
 void plan_extras(BenchPlan *plan);

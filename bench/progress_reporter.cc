@@ -67,6 +67,9 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
         std::sort(each.begin(), each.end());
         size_t n = each.size();
         c->median_ms = n % 2 ? each[n / 2] : 0.5 * (each[n / 2 - 1] + each[n / 2]);
+        c->reps = static_cast<int>(n);
+        c->rep_min = each.front();
+        c->rep_max = each.back();
     }
     if (!last)
         return;

@@ -25,7 +25,8 @@ fi
 mkdir -p "$dest"
 for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distance.svg \
   bench-speedup.png bench-resolution.png bench-distance.png \
-  bench-mesh-resolution.svg bench-mesh-distance.svg bench-mesh-resolution.png bench-mesh-distance.png; do
+  bench-mesh-resolution.svg bench-mesh-distance.svg bench-mesh-resolution.png bench-mesh-distance.png \
+  skip-columns.csv skip-columns.txt skip-columns.svg skip-columns.png; do
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
 if [ -f "$runs/ACCURACY.md" ]; then

@@ -12,6 +12,9 @@ import math
 import re
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts: make targets leave git status clean
+import readme_skipping  # noqa: E402 (after the line above)
+
 
 def tables(md):
     """{section title: [rows as lists of cells]} for every markdown table under a heading."""
@@ -132,7 +135,7 @@ def bench_blocks(md, raw, raw_json=None):
                  for i, s in enumerate(s for s in ("valley", "island", "pyramids") if s in r)]
         v = num(r["valley"][ratio]) if "valley" in r else None
         target = (f" Against the target of 150× on valley (issue 18): {fmt(v)} — {verdict(v >= 150)}."
-                  if v is not None else "")
+                  + readme_skipping.submission_spread(h, r["valley"]) if v is not None else "")
         blocks["bench:submission"] = ("**Speed** in the published run: " + ", ".join(parts) + ". Its worker "
                                       "threads start with the first frame and are kept, and joined at exit, "
                                       "for the life of the process (`RETRO_PTHREADS` sets how many)." + target)
@@ -153,6 +156,9 @@ def bench_blocks(md, raw, raw_json=None):
     if mesh_key:
         blocks["bench:mesh"] = mesh_block(t[mesh_key], scenes, ms, geo, verdict)
     blocks["bench:skipping"] = skipping_block(byname, scenes, ms, geo, t, raw_json)
+    large = readme_skipping.skip_large_block(t)
+    if large:
+        blocks["bench:skip-large"] = large
     sweep = mesh_sweep_block(t)
     if sweep:
         blocks["bench:mesh-sweep"] = sweep
@@ -369,6 +375,9 @@ def main(argv):
     raw = os.path.exists(f"{results}/bench.json")
     blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(), raw,
                           json.load(open(f"{results}/bench.json", encoding="utf-8")) if raw else None)
+    columns = readme_skipping.skip_columns_block(results)
+    if columns:
+        blocks["bench:skip-columns"] = columns
     blocks.update(accuracy_blocks(open(f"{results}/ACCURACY.md", encoding="utf-8").read()))
     old = open(path, encoding="utf-8").read()
     new = replace(old, blocks)

@@ -63,6 +63,41 @@ check "$tmp/ns.json" '"evaluated/frame"' "no evaluated/frame counter"
 check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipping in BENCH.md"
 check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
 
+# The large-frame pair (issue 18's skipping ratio): omp with and without skipping at 1920x1080,
+# D 4000, planned without --no-skip, and its table with the ratio and the geometric mean.
+mkdir -p "$tmp/large"
+if ! "$bench" --scene=maps/test/flat-64 --modes=exact \
+  --benchmark_filter="^exact/flat-64/omp/[0-9]+t/1920x1080/D4000(/noskip)?/real_time\$" --benchmark_repetitions=1 \
+  --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 --report="$tmp/large" \
+  --benchmark_out="$tmp/large/bench.json" --benchmark_out_format=json >"$tmp/large/out" 2>&1; then
+  echo "FAIL: retro-bench exited with an error on the large-frame pair:"
+  cat "$tmp/large/out"
+  exit 1
+fi
+check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/noskip/real_time"' "no large-frame case without skipping"
+check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/real_time"' "no large-frame case with skipping"
+check "$tmp/large/BENCH.md" '^### Occlusion skipping at a large frame (`omp`, [0-9]* threads, mode exact, 1920×1080, D 4000)' \
+  "no large-frame table in BENCH.md"
+check "$tmp/large/BENCH.md" '^| flat-64 | [0-9.]* | [0-9.]* | [0-9.]*× | ' "no large-frame row with a ratio"
+check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*× |' "no large-frame geometric mean"
+
+# The submission's spread across its 10 runs (issue 18), on the course's valley when present.
+if [ -d "${RETRO_SHARED:-../shared}/course" ]; then
+  mkdir -p "$tmp/sub"
+  if ! "$bench" --benchmark_filter='^submission/valley/' --benchmark_repetitions=1 --benchmark_min_time=0.001 \
+    --benchmark_min_warmup_time=0 --report="$tmp/sub" --benchmark_out="$tmp/sub/bench.json" \
+    --benchmark_out_format=json >"$tmp/sub/out" 2>&1; then
+    echo "FAIL: retro-bench exited with an error on the submission cases:"
+    cat "$tmp/sub/out"
+    exit 1
+  fi
+  check "$tmp/sub/BENCH.md" '| submission spread | runs |$' "no spread column in the submission table"
+  check "$tmp/sub/BENCH.md" '^| valley | [0-9.]* | – | – | [0-9.]* | [0-9.]*× | [0-9.]*% | 10 |$' \
+    "the submission did not run 10 times with a spread"
+else
+  echo "note: ${RETRO_SHARED:-../shared}/course absent: the submission spread is not checked"
+fi
+
 # A mesh row beside a voxel one, at a distance where the flat map is in view: its counters in
 # the JSON and its row in BENCH.md's mesh table (counts are exact, times are not checked).
 mcase=binary32/flat-64/mesh-zbuffer/1t/32x24/D200

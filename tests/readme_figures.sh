@@ -2,8 +2,11 @@
 # The README's figures are those of the committed run: every generated block of README.md
 # (<!-- NAME:begin --> ... <!-- NAME:end -->) matches what scripts/readme-figures.py writes from
 # results/BENCH.md and results/ACCURACY.md; and a changed figure in the run is caught.
-# usage: readme_figures.sh RETRO (unused)
+# The blocks of issue 18's measurements (scripts/readme_skipping.py) are generated from a run
+# that has them: a large-frame table, the submission's spread and the per-column counts.
+# usage: readme_figures.sh RETRO
 set -u
+retro=$1
 if ! command -v python3 >/dev/null 2>&1; then
   echo "FAIL: python3 missing (make deps)"
   exit 1
@@ -22,4 +25,48 @@ if python3 scripts/readme-figures.py --check "$tmp" README.md >/dev/null 2>&1; t
   echo "FAIL: a README figure differing from the run was not caught"
   exit 1
 fi
-echo "ok: README figures match the committed run, and a changed figure is caught"
+
+# Issue 18's blocks, from a run that has them: the committed BENCH.md with a large-frame table
+# and the submission's spread added in retro-bench's format, and the per-column counts.
+run="$tmp/run"
+mkdir -p "$run"
+cp results/ACCURACY.md "$run/"
+large() { # GEOMEAN_RATIO: BENCH.md with a large-frame table whose geometric mean ratio is that
+  awk -v r="$1" '/^### The course submission/ {
+      print "### Occlusion skipping at a large frame (`omp`, 2 threads, mode exact, 1920×1080, D 4000)\n"
+      print "| scene | with skipping | without | ratio | evaluated with | evaluated without | max cv |"
+      print "|---|--:|--:|--:|--:|--:|--:|"
+      print "| alpine | 2.000 | 9.000 | 4.50× | 20.0% | 100.0% | 1.0% |"
+      print "| valley | 3.000 | 9.000 | 3.00× | 30.0% | 100.0% | 1.0% |"
+      print "| geomean (2 scenes) | 2.449 | 9.000 | " r "× | | | |\n" }
+    /^\| scene \| course painter/ { sub(/ \|$/, " | submission spread | runs |") }
+    /^\|---\|--:\|--:\|--:\|--:\|--:\|$/ { $0 = $0 "--:|--:|" }
+    /^\| (valley|island|pyramids) \|/ { sub(/ \|$/, " | 12.5% | 10 |") }
+    { print }' results/BENCH.md >"$run/BENCH.md"
+}
+gen() { # the README as generated from $run
+  cp README.md "$tmp/README.md"
+  python3 scripts/readme-figures.py "$run" "$tmp/README.md" >/dev/null
+}
+expect() { # PATTERN WHAT
+  grep -qF -- "$1" "$tmp/README.md" || { echo "FAIL: $2 (the README lacks: $1)"; exit 1; }
+}
+sh scripts/skip-columns.sh "$retro" "$run" >/dev/null || { echo "FAIL: scripts/skip-columns.sh"; exit 1; }
+large 4.10
+gen || { echo "FAIL: readme-figures.py on a run with issue 18's measurements"; exit 1; }
+expect "| geomean (2 scenes) | 2.449 | 9.000 | 4.10× |" "the large-frame table is not quoted"
+expect "(geometric mean over the scenes): 4.10× (3.00× to 4.50× per scene) — met." "4.10x is not called met"
+expect "Its spread across 10 runs on valley (max − min over the median): 12.5% — met" "the spread is not quoted"
+share=$(sed -n 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$run/skip-columns.txt")
+share=$(printf '%.1f' "$share")
+expect "\`ybuffer\` with skipping evaluates $share% of the samples" "the per-column block does not quote --stats' share"
+large 3.90
+gen && expect "4× faster than without skipping** (geometric mean over the scenes): 3.90× (3.00× to 4.50× per scene) — **not met**." \
+  "3.90x is not called not met"
+# per-column counts that do not add up to the frame's totals are refused
+awk -F, 'NR == 2 { $3 = $3 + 1 } { print }' OFS=, "$run/skip-columns.csv" >"$run/c.tmp" && mv "$run/c.tmp" "$run/skip-columns.csv"
+if gen 2>/dev/null; then
+  echo "FAIL: per-column counts that disagree with skip-columns.txt were accepted"
+  exit 1
+fi
+echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated"

@@ -11,6 +11,7 @@
 #include "hmax_pyramid.h"
 #include "isa.h"
 #include "kernels.h"
+#include "render_columns.h"
 #include "retro_mesh.h"
 #include "scene_args.h"
 
@@ -21,7 +22,7 @@ static void help(void)
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
            "                        [--threads N] [--lod L] [--no-skip] [--stats]\n"
-           "                        [--time [N]]\n"
+           "                        [--columns OUT.csv] [--time [N]]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "SCENE is a file ending in .scene (README, Scenes): its map, camera, screen, sky and\n"
@@ -49,6 +50,10 @@ static void help(void)
            "              paint, and their share of the frame's samples (W x (D-1)), and\n"
            "              simd-avx512's where it runs; mesh: the triangles submitted, after\n"
            "              culling, after clipping, and the fragments\n"
+           "  --columns CSV voxel: write per screen column the samples the ybuffer kernel\n"
+           "              evaluates and those that paint, with skipping as asked and without:\n"
+           "              column,samples,evaluated,painting,evaluated_noskip,painting_noskip\n"
+           "              (they add up to --stats' counts); -o is then optional\n"
            "  --time [N]  render N frames (default 50) after one untimed frame and print the\n"
            "              kernel used, the mode, the median and the minimum ms per frame;\n"
            "              -o is then optional (the last frame is written)\n"
@@ -59,11 +64,20 @@ static void help(void)
            RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE, isa);
 }
 
+/* The outputs named on the command line: -o and --columns. */
+typedef struct render_outputs {
+    const char *image, *columns;
+} render_outputs;
+
 static int render_extra(void *user, const char *a, const char *v)
 {
-    if (strcmp(a, "-o"))
+    render_outputs *o = user;
+    if (!strcmp(a, "-o"))
+        o->image = v;
+    else if (!strcmp(a, "--columns"))
+        o->columns = v;
+    else
         return 0;
-    *(const char **)user = v;
     return 1;
 }
 
@@ -145,7 +159,7 @@ static int print_stats(render_job *j, const player_t *p)
 
 int cmd_render(int argc, char **argv)
 {
-    const char *out_path = NULL;
+    render_outputs outs = {NULL, NULL};
     render_opts o;
     render_opts_init(&o);
     /* The two flags without a value are taken out before the shared parser sees argv. */
@@ -176,11 +190,12 @@ int cmd_render(int argc, char **argv)
             args[n++] = argv[i];
     }
     args[n] = NULL;
-    int r = render_args("render", "MAP", n, args, &o, render_extra, &out_path, help);
+    int r = render_args("render", "MAP", n, args, &o, render_extra, &outs, help);
     free(args);
     if (r)
         return r == 1 ? 0 : r;
-    if (!out_path && !time_n)
+    const char *out_path = outs.image;
+    if (!out_path && !time_n && !outs.columns)
         return cli_error("render", "no output given: -o OUT.ppm or -o OUT.png");
 
     render_job j;
@@ -189,11 +204,18 @@ int cmd_render(int argc, char **argv)
     j.opts.no_skip = no_skip;
     player_t p;
     job_pose(&j, &o, -1, &p);
-    int status = time_n ? time_frames(&j, &p, time_n) : 0;
+    /* The column counts are staged before the image is written, so a bad --columns leaves
+     * no image either, and committed only when everything else succeeded. */
+    render_columns cols = {outs.columns, NULL};
+    int status = outs.columns ? columns_stage(&cols, &j, &p) : 0;
+    if (!status && time_n)
+        status = time_frames(&j, &p, time_n);
     if (!status && out_path)
         status = job_write("render", &j, &p, out_path);
     if (!status && stats)
         status = print_stats(&j, &p);
+    int cs = columns_finish(&cols, !status);
+    status = status ? status : cs;
     job_close(&j);
     return status;
 }

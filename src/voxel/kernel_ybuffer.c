@@ -26,7 +26,8 @@
  * frame that has a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_run
  * (src/voxel/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
  * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
- * and painting into retro_ybuffer_counts (the library holds that build too, under other names).
+ * and painting into retro_ybuffer_counts, and per column into retro_ybuffer_columns when set
+ * (ybuffer_columns.h; the library holds that build too, under other names).
  */
 #include "kernels.h"
 #include "retro_internal.h"
@@ -36,9 +37,14 @@
 #endif
 
 #ifdef RETRO_COUNT_SAMPLES
+#include "ybuffer_columns.h"
 retro_sample_counts retro_ybuffer_counts;
-#define COUNT_EVAL() (retro_ybuffer_counts.evaluated++)
-#define COUNT_PAINT() (retro_ybuffer_counts.painting++)
+retro_column_counts *retro_ybuffer_columns;
+/* Every use has the sample's column in u. */
+#define COUNT_EVAL()                                                                               \
+    (retro_ybuffer_counts.evaluated++, retro_ybuffer_columns ? (void)retro_ybuffer_columns[u].evaluated++ : (void)0)
+#define COUNT_PAINT()                                                                              \
+    (retro_ybuffer_counts.painting++, retro_ybuffer_columns ? (void)retro_ybuffer_columns[u].painting++ : (void)0)
 #else
 #define COUNT_EVAL() ((void)0)
 #define COUNT_PAINT() ((void)0)
