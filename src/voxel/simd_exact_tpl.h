@@ -53,10 +53,11 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
     SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 ? SIMD_DIST(1) : 1, &s, pow2, packed, bilinear);
 #ifndef RETRO_SUBMISSION
     SIMD_NAME(skip_t) g;
+    int probe = 1, batch = RETRO_SIMD_SKIP_NEAR; /* the next probe's index, the batch after it */
     if (skip)
         SIMD_NAME(skip_init)(&g, f, u0, width);
 #endif
-    int sn = 1, probe = 1, batch = RETRO_SIMD_SKIP_NEAR;
+    int sn = 1;
     for (int n = 1; n < n_end;) {
         if (!v_bits(v_igt(v_set1_i(f->vcap[n]), y)))
             break;
