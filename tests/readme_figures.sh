@@ -32,16 +32,22 @@ run="$tmp/run"
 mkdir -p "$run"
 cp results/ACCURACY.md "$run/"
 large() { # GEOMEAN_RATIO: BENCH.md with a large-frame table whose geometric mean ratio is that
-  awk -v r="$1" '/^### The course submission/ {
+  # a committed run that already has them: its large-frame section is dropped and its spreads
+  # replaced, so the test's own figures are the only ones
+  awk -v r="$1" '/^### Occlusion skipping at a large frame/ { drop = 1; next }
+    drop && /^### / { drop = 0 }
+    drop { next }
+    /^### The course submission/ {
       print "### Occlusion skipping at a large frame (`omp`, 2 threads, mode exact, 1920×1080, D 4000)\n"
       print "| scene | with skipping | without | ratio | evaluated with | evaluated without | max cv |"
       print "|---|--:|--:|--:|--:|--:|--:|"
       print "| alpine | 2.000 | 9.000 | 4.50× | 20.0% | 100.0% | 1.0% |"
       print "| valley | 3.000 | 9.000 | 3.00× | 30.0% | 100.0% | 1.0% |"
       print "| geomean (2 scenes) | 2.449 | 9.000 | " r "× | | | |\n" }
-    /^\| scene \| course painter/ { sub(/ \|$/, " | submission spread | runs |") }
+    /^\| scene \| course painter/ { has = /submission spread/; if (!has) sub(/ \|$/, " | submission spread | runs |") }
     /^\|---\|--:\|--:\|--:\|--:\|--:\|$/ { $0 = $0 "--:|--:|" }
-    /^\| (valley|island|pyramids) \|/ { sub(/ \|$/, " | 12.5% | 10 |") }
+    /^\| (valley|island|pyramids) \|/ {
+      if (has) sub(/\| [0-9.]+% \| [0-9]+ \|$/, "| 12.5% | 10 |"); else sub(/ \|$/, " | 12.5% | 10 |") }
     { print }' results/BENCH.md >"$run/BENCH.md"
 }
 gen() { # the README as generated from $run
