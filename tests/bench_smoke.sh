@@ -15,14 +15,21 @@ if [ ! -f maps/test/flat-64.pgm ]; then
 fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
-  --benchmark_filter="^($case|peer/flat-64/classic-voxelspace/1t/32x24/D16)\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
-  --benchmark_min_warmup_time=0 --report="$tmp" --charts="$tmp/charts.gp" \
-  --benchmark_out="$tmp/bench.json" --benchmark_out_format=json >"$tmp/out" 2>&1; then
-  echo "FAIL: retro-bench exited with an error:"
-  cat "$tmp/out"
-  exit 1
-fi
+# run_bench DIR WHAT ARGS...: one short repetition of the cases ARGS select, the report and
+# DIR/bench.json in DIR, or the test fails with retro-bench's output
+run_bench() {
+  dir=$1 what=$2
+  shift 2
+  mkdir -p "$dir"
+  if ! "$bench" "$@" --benchmark_repetitions=1 --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 \
+    --report="$dir" --benchmark_out="$dir/bench.json" --benchmark_out_format=json >"$dir/out" 2>&1; then
+    echo "FAIL: retro-bench exited with an error$what:"
+    cat "$dir/out"
+    exit 1
+  fi
+}
+run_bench "$tmp" "" --scene=maps/test/flat-64 --size=32x24 --distance=16 --charts="$tmp/charts.gp" \
+  --benchmark_filter="^($case|peer/flat-64/classic-voxelspace/1t/32x24/D16)\$"
 fail=0
 check() { # FILE PATTERN WHAT
   if ! grep -q -- "$2" "$1"; then
@@ -48,32 +55,18 @@ check "$tmp/bench.json" '"retro_quick": "false"' "the JSON does not record wheth
 # --no-skip: each mode exact case also timed with skipping off, side by side, with the samples
 # the counting build evaluates per frame beside the time (docs/SKIPPING.md)
 yb=exact/flat-64/ybuffer/1t/32x24/D16
-mkdir -p "$tmp/ns"
-if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=16 --no-skip --modes=exact \
-  --benchmark_filter="^exact/flat-64/ybuffer/1t/32x24/D(16|100)(/noskip)?\$" --benchmark_repetitions=1 --benchmark_min_time=0.001 \
-  --benchmark_min_warmup_time=0 --report="$tmp/ns" --charts="$tmp/ns.gp" \
-  --benchmark_out="$tmp/ns.json" --benchmark_out_format=json >"$tmp/ns.out" 2>&1; then
-  echo "FAIL: retro-bench --no-skip exited with an error:"
-  cat "$tmp/ns.out"
-  exit 1
-fi
-check "$tmp/ns.json" "\"name\": \"$yb/noskip\"" "--no-skip planned no twin"
-check "$tmp/ns.json" "\"name\": \"$yb\"" "--no-skip lost the skipping case"
-check "$tmp/ns.json" '"evaluated/frame"' "no evaluated/frame counter"
+run_bench "$tmp/ns" " with --no-skip" --scene=maps/test/flat-64 --size=32x24 --distance=16 --no-skip \
+  --modes=exact --charts="$tmp/ns.gp" --benchmark_filter="^exact/flat-64/ybuffer/1t/32x24/D(16|100)(/noskip)?\$"
+check "$tmp/ns/bench.json" "\"name\": \"$yb/noskip\"" "--no-skip planned no twin"
+check "$tmp/ns/bench.json" "\"name\": \"$yb\"" "--no-skip lost the skipping case"
+check "$tmp/ns/bench.json" '"evaluated/frame"' "no evaluated/frame counter"
 check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipping in BENCH.md"
 check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
 
 # The large-frame pair (issue 18's skipping ratio): omp with and without skipping at 1920x1080,
 # D 4000, planned without --no-skip, and its table with the ratio and the geometric mean.
-mkdir -p "$tmp/large"
-if ! "$bench" --scene=maps/test/flat-64 --modes=exact \
-  --benchmark_filter="^exact/flat-64/omp/[0-9]+t/1920x1080/D4000(/noskip)?/real_time\$" --benchmark_repetitions=1 \
-  --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 --report="$tmp/large" \
-  --benchmark_out="$tmp/large/bench.json" --benchmark_out_format=json >"$tmp/large/out" 2>&1; then
-  echo "FAIL: retro-bench exited with an error on the large-frame pair:"
-  cat "$tmp/large/out"
-  exit 1
-fi
+run_bench "$tmp/large" " on the large-frame pair" --scene=maps/test/flat-64 --modes=exact \
+  --benchmark_filter="^exact/flat-64/omp/[0-9]+t/1920x1080/D4000(/noskip)?/real_time\$"
 check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/noskip/real_time"' "no large-frame case without skipping"
 check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/real_time"' "no large-frame case with skipping"
 check "$tmp/large/BENCH.md" '^### Occlusion skipping at a large frame (`omp`, [0-9]* threads, mode exact, 1920×1080, D 4000)' \
@@ -83,14 +76,7 @@ check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*
 
 # The submission's spread across its 10 runs (issue 18), on the course's valley when present.
 if [ -d "${RETRO_SHARED:-../shared}/course" ]; then
-  mkdir -p "$tmp/sub"
-  if ! "$bench" --benchmark_filter='^submission/valley/' --benchmark_repetitions=1 --benchmark_min_time=0.001 \
-    --benchmark_min_warmup_time=0 --report="$tmp/sub" --benchmark_out="$tmp/sub/bench.json" \
-    --benchmark_out_format=json >"$tmp/sub/out" 2>&1; then
-    echo "FAIL: retro-bench exited with an error on the submission cases:"
-    cat "$tmp/sub/out"
-    exit 1
-  fi
+  run_bench "$tmp/sub" " on the submission cases" --benchmark_filter='^submission/valley/'
   check "$tmp/sub/BENCH.md" '| submission spread | runs |$' "no spread column in the submission table"
   check "$tmp/sub/BENCH.md" '^| valley | [0-9.]* | – | – | [0-9.]* | [0-9.]*× | [0-9.]*% | 10 |$' \
     "the submission did not run 10 times with a spread"
@@ -101,15 +87,8 @@ fi
 # A mesh row beside a voxel one, at a distance where the flat map is in view: its counters in
 # the JSON and its row in BENCH.md's mesh table (counts are exact, times are not checked).
 mcase=binary32/flat-64/mesh-zbuffer/1t/32x24/D200
-mkdir "$tmp/mesh"
-if ! "$bench" --scene=maps/test/flat-64 --size=32x24 --distance=200 \
-  --benchmark_filter="^($mcase/.*|exact/flat-64/ybuffer/1t/32x24/D200)\$" --benchmark_repetitions=1 \
-  --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 --report="$tmp/mesh" \
-  --benchmark_out="$tmp/mesh/bench.json" --benchmark_out_format=json >"$tmp/mesh/out" 2>&1; then
-  echo "FAIL: retro-bench exited with an error on the mesh case:"
-  cat "$tmp/mesh/out"
-  exit 1
-fi
+run_bench "$tmp/mesh" " on the mesh case" --scene=maps/test/flat-64 --size=32x24 --distance=200 \
+  --benchmark_filter="^($mcase/.*|exact/flat-64/ybuffer/1t/32x24/D200)\$"
 # (its name carries the fixed iterations and repetitions: .../iterations:2/repeats:3)
 check "$tmp/mesh/bench.json" "\"run_name\": \"$mcase/" "the mesh case is not in the JSON"
 for counter in tri_submitted tri_drawn fragments triangles/s fragments/s; do
