@@ -113,9 +113,19 @@ Test(skipping, counts_agree)
     retro_map_free(&valley);
 }
 
-/* The interface the SIMD strips will use, on its own: for random frames, columns, distances
- * and y-buffers, every distance retro_skip_column skips has a row at or below y (brute force
- * from the sample's own cell), across the spike, seam and size cases above. */
+/* Low noise terrain (seed) with three spikes placed by st: the probes' queries below. */
+static void spiky_map(retro_map *m, int S, uint64_t seed, uint64_t *st)
+{
+    noise_map(m, S, seed);
+    for (size_t i = 0; i < (size_t)S * (size_t)S; i++)
+        m->height[i] = (uint8_t)(m->height[i] / 4);
+    for (int k = 0; k < 3; k++)
+        m->height[rng_next(st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
+}
+
+/* The column probe on its own: for random frames, columns, distances and y-buffers, every
+ * distance retro_skip_column skips has a row at or below y (brute force from the sample's own
+ * cell), across the spike, seam and size cases above. */
 Test(skipping, probe_bound)
 {
     static const int sizes[] = {5, 6, 37, 64, 100, 129};
@@ -125,11 +135,7 @@ Test(skipping, probe_bound)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         int S = sizes[si];
         retro_map m;
-        noise_map(&m, S, 31 + (uint64_t)S);
-        for (size_t i = 0; i < (size_t)S * (size_t)S; i++)
-            m.height[i] = (uint8_t)(m.height[i] / 4); /* low terrain ... */
-        for (int k = 0; k < 3; k++) /* ... with a few spikes */
-            m.height[rng_next(&st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
+        spiky_map(&m, S, 31 + (uint64_t)S, &st);
         uint32_t out[1];
         retro_ctx *rc = retro_ctx_new();
         cr_assert(rc);
@@ -200,11 +206,7 @@ Test(skipping, probe_bound_lod)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         int S = sizes[si];
         retro_map m;
-        noise_map(&m, S, 71 + (uint64_t)S);
-        for (size_t i = 0; i < (size_t)S * (size_t)S; i++)
-            m.height[i] = (uint8_t)(m.height[i] / 4);
-        for (int k = 0; k < 3; k++)
-            m.height[rng_next(&st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
+        spiky_map(&m, S, 71 + (uint64_t)S, &st);
         uint32_t out[1];
         retro_ctx *rc = retro_ctx_new();
         cr_assert(rc);
