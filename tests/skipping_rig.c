@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "ctx.h"
+#include "skip_course.h"
 #include "skipping_rig.h"
 
 /* The kernels whose strips skip (the SIMD strips, and the threaded kernels running them). */
@@ -76,10 +77,11 @@ void make_map(retro_map *m, int S)
     paint_cells(m);
 }
 
-/* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares; lod is
- * mode lod's rate (retro_render_opts.lod), 0 for the default. */
+/* Renders pose p with naive, ybuffer skipping and ybuffer not skipping, and compares; mode is
+ * exact (as the effects decide: lod with RETRO_FX_LOD) or course; lod is mode lod's rate
+ * (retro_render_opts.lod), 0 for the default. */
 static void check_one(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
-                      const retro_effects *fx, float lod)
+                      const retro_effects *fx, float lod, retro_mode mode)
 {
     size_t n = (size_t)W * (size_t)H;
     if (n > g->cap) {
@@ -91,6 +93,7 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
     ctx_t c = {W, H, m->size, D, 0x66a3ff00u, m->height, m->color, g->ref};
     const retro_kernel *naive = retro_kernel_find("naive"), *yb = retro_kernel_find("ybuffer");
     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+    o.mode = (int)mode;
     o.fx = fx;
     o.lod = lod;
     cr_assert_eq(retro_render(g->rc[NAIVE], naive, &o, &p, &c), RETRO_OK, "%s", what);
@@ -109,9 +112,12 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
                            H, D, i % (size_t)W + 1, (size_t)H - i / (size_t)W, g->out[i], g->ref[i]);
         }
     }
-    /* The skipping context took the skipping path whenever the map has pyramid levels. */
+    /* The skipping context took the skipping path whenever the map (the course's torus of
+     * side S - 1 in mode course) has pyramid levels and, in mode course, the drift is bounded. */
     const struct retro_pyramid *skip_pyr = retro_ctx_frame(g->rc[SKIP])->pyr;
-    cr_assert_eq(skip_pyr != NULL, m->size > 4, "%s: pyramid %s for S %d", what, skip_pyr ? "present" : "absent",
+    const int course = mode == RETRO_MODE_COURSE;
+    const int expect_pyr = course ? m->size - 1 > 4 && retro_course_margin(p.x, p.y, W, D) > 0 : m->size > 4;
+    cr_assert_eq(skip_pyr != NULL, expect_pyr, "%s: pyramid %s for S %d", what, skip_pyr ? "present" : "absent",
                  m->size);
     cr_assert_null(retro_ctx_frame(g->rc[NOSKIP])->pyr, "%s: no_skip still had a pyramid", what);
     /* The kernels whose strips skip, at every level and thread count, against naive. */
@@ -119,12 +125,11 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
         report_ctx rep = {&g->chk[k], what, 0, 0, ""};
         int bad = 0;
         g->chk[k].lod = lod;
-        cr_assert_eq(retro_check_frame(&g->chk[k], RETRO_MODE_EXACT, fx, &p, &c, report, &rep, &bad), RETRO_OK,
-                     "%s", what);
+        cr_assert_eq(retro_check_frame(&g->chk[k], mode, fx, &p, &c, report, &rep, &bad), RETRO_OK, "%s", what);
         cr_assert_eq(bad, 0, "%s: S %d, (%.9g, %.9g), angle %d, height %d, %dx%d, D %d: %s", what, m->size,
                      (double)p.x, (double)p.y, p.angle, p.height, W, H, D, rep.first);
         /* each of them rendered with the pyramid, so it had the chance to skip */
-        cr_assert_eq(rep.with_pyramid, m->size > 4 ? rep.ran : 0, "%s: %d of %d variants had a pyramid", what,
+        cr_assert_eq(rep.with_pyramid, expect_pyr ? rep.ran : 0, "%s: %d of %d variants had a pyramid", what,
                      rep.with_pyramid, rep.ran);
         g->variants += rep.ran;
     }
@@ -134,11 +139,17 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
 
 /* Each case in mode exact, then in mode lod (the lod effect on the same effects) at a rate
  * taking the smallest steps allowed, the default's, or ones longer than the finest blocks,
- * in turn: mode lod's runs are of sample indices whose distances grow (hmax_pyramid.h). */
+ * in turn: mode lod's runs are of sample indices whose distances grow (hmax_pyramid.h); and
+ * without effects in mode course (maps of S >= 2), whose torus is of side S - 1. */
 void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
            const retro_effects *fx)
 {
-    check_one(g, what, m, p, W, H, D, fx, 0);
+    check_one(g, what, m, p, W, H, D, fx, 0, RETRO_MODE_EXACT);
+    if (!fx && m->size >= 2) {
+        char course[160];
+        snprintf(course, sizeof course, "%s (mode course)", what);
+        check_one(g, course, m, p, W, H, D, NULL, 0, RETRO_MODE_COURSE);
+    }
     static const float rates[] = {0.02f, 0.3f, 0.001f};
     const float rate = rates[g->frames % 3];
     retro_effects lod;
@@ -149,7 +160,7 @@ void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int
     lod.flags |= RETRO_FX_LOD;
     char label[160];
     snprintf(label, sizeof label, "%s (mode lod %g)", what, (double)rate);
-    check_one(g, label, m, p, W, H, D, &lod, rate);
+    check_one(g, label, m, p, W, H, D, &lod, rate, RETRO_MODE_EXACT);
 }
 
 player_t at(float x, float y, int angle, int height)

@@ -3,6 +3,7 @@
  * retro_skip_column, the interface the SIMD strips will use, is checked on its own against a
  * brute force. Counts only, never timings. Frames: tests/test_skipping.c. */
 #include <criterion/criterion.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -72,6 +73,9 @@ static void counts_mode(retro_mode mode, const char *what, const retro_map *m, p
 static void counts_compare(const char *what, const retro_map *m, player_t p, int W, int H, int D, int must_skip)
 {
     counts_mode(RETRO_MODE_EXACT, what, m, p, W, H, D, must_skip);
+    char course[160];
+    snprintf(course, sizeof course, "%s (mode course)", what);
+    counts_mode(RETRO_MODE_COURSE, course, m, p, W, H, D, 0);
 }
 
 /* A view where skipping must skip: a low ridge near the camera hides the plain behind it, and
@@ -88,6 +92,8 @@ Test(skipping, skipping_skips)
     counts_compare("ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     /* mode lod samples fewer distances behind the ridge, still most of them hidden */
     counts_mode(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
+    /* mode course walks the torus of side S - 1 from its accumulated positions */
+    counts_mode(RETRO_MODE_COURSE, "ridge (mode course)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     retro_map_free(&m);
 }
 

@@ -48,6 +48,9 @@ void retro_ctx_free(retro_ctx *rc)
     if (rc->pyr)
         retro_pyramid_free(rc->pyr);
     free(rc->pyr);
+    if (rc->pyr_course)
+        retro_pyramid_free(rc->pyr_course);
+    free(rc->pyr_course);
 #endif
     free(rc);
 }
@@ -67,6 +70,8 @@ void retro_ctx_maps_rewritten(retro_ctx *rc)
 #ifndef RETRO_SUBMISSION
     if (rc->pyr)
         retro_pyramid_stale(rc->pyr);
+    if (rc->pyr_course)
+        retro_pyramid_stale(rc->pyr_course);
 #endif
 }
 

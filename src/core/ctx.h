@@ -49,8 +49,9 @@ struct retro_ctx {
     retro_hmax_cache hmax;     /* the height map's maximum (hmax_cache.c) */
     retro_packed_map packed;   /* the SIMD kernels' packed map (simd_map.c) */
     retro_fx_bake bake;        /* morph, shade and water baked into maps (effects_bake.c) */
-    /* occlusion skipping's maximum pyramid (hmax_pyramid.c), allocated on first use */
-    struct retro_pyramid *pyr;
+    /* occlusion skipping's maximum pyramids (hmax_pyramid.c), allocated on first use: of period
+     * S (modes exact, lod) and S - 1 (mode course), so frames of both kinds keep theirs */
+    struct retro_pyramid *pyr, *pyr_course;
 
     /* The mesh family's state (src/mesh/family.c): the module's context, the frame's inputs,
      * the last frame's counts; NULL until a mesh frame is set up. */

@@ -14,8 +14,9 @@
 #include "kernels.h"
 #include "retro_scene.h"
 #include "strips.h"
-#ifndef RETRO_SUBMISSION /* the submission renders mode course, which does not skip yet */
+#ifndef RETRO_SUBMISSION /* the submission's kernel does not skip (docs/SKIPPING.md) */
 #include "hmax_pyramid.h"
+#include "skip_course.h"
 #endif
 
 /* Grows a buffer to n elements; memory only ever grows so steady-state frames never allocate. */
@@ -300,9 +301,15 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
 #ifndef RETRO_SUBMISSION
-    /* occlusion skipping (docs/SKIPPING.md) in modes exact and lod, unless switched off */
+    /* occlusion skipping (docs/SKIPPING.md), unless switched off: modes exact and lod on the
+     * S x S torus; mode course on its (S - 1) x (S - 1) torus when its positions' drift is
+     * small enough to bound (skip_course.h), for the ybuffer strip (the SIMD column does not
+     * skip) */
     if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && !rc->no_skip &&
-        retro_pyramid_get(&rc->pyr, hm, S, &f->pyr))
+        retro_pyramid_get(&rc->pyr, hm, S, S, &f->pyr))
+        return RETRO_ENOMEM;
+    if (mode == RETRO_MODE_COURSE && !rc->no_skip && (f->course_margin = retro_course_margin(p->x, p->y, W, D)) &&
+        retro_pyramid_get(&rc->pyr_course, hm, S, S - 1, &f->pyr))
         return RETRO_ENOMEM;
 #endif
     f->strip = retro_strip_best(mode, f->fx); /* once per frame, for the threaded kernels */

@@ -33,6 +33,9 @@ struct retro_frame {
     /* the strip the threaded kernels run: the fastest of the strip table (strips.h) for this
      * frame's mode and effects at the CPU's ISA level, chosen once by setup */
     void (*strip)(const struct retro_frame *f, float *qx, float *qy, int u0, int u1);
+    /* the map's maximum-height pyramid when occlusion skipping is on (hmax_pyramid.h,
+     * docs/SKIPPING.md), else NULL: of period S in modes exact and lod, S - 1 in mode course */
+    const struct retro_pyramid *pyr;
     struct { /* modes exact and lod (x0, y0 in every mode) */
         float cs, sn;      /* view direction, exact at multiples of 90 degrees */
         float x0, y0;      /* position reduced modulo S */
@@ -47,15 +50,15 @@ struct retro_frame {
         /* mode lod: the sample distances, increasing from 1 */
         const int *dist;
         int ndist;
-        /* modes exact and lod: the map's maximum-height pyramid when occlusion skipping is on
-         * (hmax_pyramid.h, docs/SKIPPING.md), else NULL */
-        const struct retro_pyramid *pyr;
     };
     struct { /* mode course */
         float cw2;         /* (float)(W/2) */
         int ch2;           /* H/2 */
         const float *lx, *ly; /* [D] left endpoint of line d */
         const float *sx, *sy; /* [D] per-column step of line d */
+        /* cells a run's box is widened by on each side for the accumulated positions' drift
+         * from their straight lines (skip_course.h); set with pyr */
+        int course_margin;
     };
     struct { /* mode truth: exact's quantities in binary64 */
         double cs_d, sn_d, x0_d, y0_d;

@@ -16,12 +16,12 @@ void retro_pyramid_stale(retro_pyramid *p)
     p->map = NULL;
 }
 
-/* Levels RETRO_PYR_LMIN.. while a side has at least two blocks: at one block the window is the
- * map's maximum, which vcap already uses. */
-static int top_level(int S)
+/* Levels RETRO_PYR_LMIN.. while a side of the torus (P cells) has at least two blocks: at one
+ * block the window is the map's maximum, which vcap already uses. */
+static int top_level(int P)
 {
     int L = RETRO_PYR_LMIN - 1;
-    while (L < RETRO_PYR_LMAX && ((S - 1) >> (L + 1)) >= 1)
+    while (L < RETRO_PYR_LMAX && ((P - 1) >> (L + 1)) >= 1)
         L++;
     return L;
 }
@@ -69,14 +69,15 @@ static void windows(uint8_t *win, const uint8_t *blk, uint8_t *tmp, int n, int p
     }
 }
 
-/* Block maxima of the finest level straight from the map (partial blocks at the far edges). */
-static void finest_blocks(uint8_t *blk, const uint8_t *h, int S, int L, int n)
+/* Block maxima of the finest level straight from the map's top-left P x P cells, row stride S
+ * (partial blocks at the far edges). */
+static void finest_blocks(uint8_t *blk, const uint8_t *h, int S, int P, int L, int n)
 {
     memset(blk, 0, (size_t)n * (size_t)n);
-    for (int j = 0; j < S; j++) {
+    for (int j = 0; j < P; j++) {
         uint8_t *row = blk + (size_t)(j >> L) * (size_t)n;
         const uint8_t *src = h + (size_t)j * (size_t)S;
-        for (int i = 0; i < S; i++) {
+        for (int i = 0; i < P; i++) {
             uint8_t *m = &row[i >> L];
             *m = src[i] > *m ? src[i] : *m;
         }
@@ -98,21 +99,22 @@ static void coarsen(uint8_t *blk, int n, int n2)
         }
 }
 
-int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S)
+int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S, int P)
 {
-    if (p->map == h && p->S == S)
+    if (p->map == h && p->S == S && p->P == P)
         return 0;
     p->map = NULL;
-    int top = top_level(S);
+    int top = top_level(P);
     p->lmax = top;
     p->S = S;
+    p->P = P;
     if (top < RETRO_PYR_LMIN) {
         p->map = h;
         return 0;
     }
     size_t total = 0;
     for (int L = RETRO_PYR_LMIN; L <= top; L++) {
-        p->n[L] = blocks(S, L);
+        p->n[L] = blocks(P, L);
         total += (size_t)p->n[L] * (size_t)p->n[L];
     }
     size_t n0 = (size_t)p->n[RETRO_PYR_LMIN] * (size_t)p->n[RETRO_PYR_LMIN];
@@ -127,10 +129,10 @@ int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S)
         p->cap = need;
     }
     uint8_t *blk = p->mem + total, *tmp = blk + n0, *at = p->mem;
-    finest_blocks(blk, h, S, RETRO_PYR_LMIN, p->n[RETRO_PYR_LMIN]);
+    finest_blocks(blk, h, S, P, RETRO_PYR_LMIN, p->n[RETRO_PYR_LMIN]);
     for (int L = RETRO_PYR_LMIN; L <= top; L++) {
         int n = p->n[L];
-        windows(at, blk, tmp, n, S % (1 << L) != 0);
+        windows(at, blk, tmp, n, P % (1 << L) != 0);
         p->win[L] = at;
         at += (size_t)n * (size_t)n;
         if (L < top)
@@ -140,12 +142,12 @@ int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S)
     return 0;
 }
 
-int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, const retro_pyramid **out)
+int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, int P, const retro_pyramid **out)
 {
     *out = NULL;
     if (!*slot && !(*slot = calloc(1, sizeof **slot)))
         return -1;
-    if (retro_pyramid_build(*slot, h, S))
+    if (retro_pyramid_build(*slot, h, S, P))
         return -1;
     if ((*slot)->lmax >= RETRO_PYR_LMIN)
         *out = *slot;

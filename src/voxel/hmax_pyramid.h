@@ -39,7 +39,8 @@ enum {
 
 typedef struct retro_pyramid {
     const uint8_t *map;   /* the height map it was built from (NULL: none built) */
-    int S;
+    int S;                /* the map's side, its row stride */
+    int P;                /* the torus' side: S in modes exact and lod, S - 1 in mode course */
     int lmax;             /* levels RETRO_PYR_LMIN..lmax exist; lmax < LMIN: none (S <= 4) */
     int n[RETRO_PYR_LMAX + 1];            /* blocks per side at level L */
     const uint8_t *win[RETRO_PYR_LMAX + 1]; /* [n*n] window maxima at level L, row-major */
@@ -47,16 +48,18 @@ typedef struct retro_pyramid {
     size_t cap;
 } retro_pyramid;
 
-/* Makes p the pyramid of map h (S x S) unless it already is. Allocates only when the map is
- * new and larger than any before. Returns 0, or -1 when out of memory (p then holds none). */
-int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S);
+/* Makes p the pyramid of the torus of the top-left P x P cells of map h (S x S, P <= S)
+ * unless it already is. The header's S is P here: blocks, windows and the lemma are of the
+ * P x P torus, whose cell (i, j) is h[j * S + i]. Allocates only when the map is new and larger
+ * than any before. Returns 0, or -1 when out of memory (p then holds none). */
+int retro_pyramid_build(retro_pyramid *p, const uint8_t *h, int S, int P);
 void retro_pyramid_free(retro_pyramid *p);
 /* Forgets which map p was built from, so the next build recomputes it. */
 void retro_pyramid_stale(retro_pyramid *p);
-/* A context's pyramid (retro_ctx.pyr, allocated into *slot on first use) made the pyramid of
- * map h (S x S); *out is it, or NULL when the map is too small to have levels. Returns 0, or
- * -1 when out of memory (*out NULL). */
-int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, const retro_pyramid **out);
+/* A context's pyramid (retro_ctx.pyr or pyr_course, allocated into *slot on first use) made
+ * the pyramid of period P of map h (S x S); *out is it, or NULL when the map is too small to
+ * have levels. Returns 0, or -1 when out of memory (*out NULL). */
+int retro_pyramid_get(retro_pyramid **slot, const uint8_t *h, int S, int P, const retro_pyramid **out);
 
 /* Counts of the counting build of the ybuffer kernel (retro_kernel_ybuffer_counted, in
  * the library as an object of kernel_ybuffer.c compiled with RETRO_COUNT_SAMPLES). Global and

@@ -34,6 +34,7 @@
 #include "retro_scene.h"
 #ifndef RETRO_SUBMISSION
 #include "hmax_pyramid.h"
+#include "skip_course.h"
 #endif
 
 #ifdef RETRO_COUNT_SAMPLES
@@ -294,6 +295,48 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
 }
 #endif
 
+#ifndef RETRO_SUBMISSION
+/* Columns [c0, c1) of mode course with skipping (skip_course.h, where the bound is proved),
+ * each walked nearest first over its accumulators qx[d], qy[d] as columns_skip() walks mode
+ * exact's, then every accumulator advanced by the column, sampled or not, so the next column
+ * reads the same positions as in chunk(). */
+static void columns_skip_course(const retro_frame *frame, float *qx, float *qy, int c0, int c1)
+{
+    const retro_frame copy = *frame, *f = &copy;
+    const int W = f->W, H = f->H, D = f->D;
+    const int *vcap = f->vcap;
+    const int lmin = retro_course_lmin(f->course_margin, 2);
+    uint32_t *out = f->out;
+    for (int u = c0; u < c1; u++) {
+        retro_course_col col;
+        retro_course_col_init(&col, f, qx, qy, lmin);
+        int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
+        while (d < D && y < vcap[d]) {
+            int e = retro_skip_course(f, &col, qx, qy, d, D, y);
+            if (e > d) {
+                d = e;
+                batch = RETRO_SKIP_NEAR;
+                continue;
+            }
+            const int end = D - d < batch ? D : d + batch;
+            batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
+            for (; d < end && y < H; d++) {
+                uint32_t color;
+                COUNT_EVAL();
+                int v = sample(f, KIND_COURSE, 0, 0, u, d, 0, 0, qx[d], qy[d], y, &color);
+                if (v > y) {
+                    COUNT_PAINT();
+                    y = span(out, W, H, u, y, v, color);
+                }
+            }
+            d = end;
+        }
+        span(out, W, H, u, y, H, f->sky);
+        retro_course_advance(f, qx, qy, u, u + 1);
+    }
+}
+#endif
+
 typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
 #define CHUNK_FN(name, kind, fog, bilinear)                                                        \
     static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
@@ -361,7 +404,12 @@ static chunk_fn chunk_for(const retro_frame *f)
     }
 #endif
     switch (f->mode) {
-    case RETRO_MODE_COURSE: return course;
+    case RETRO_MODE_COURSE:
+#ifndef RETRO_SUBMISSION
+        if (f->pyr)
+            return columns_skip_course;
+#endif
+        return course;
     case RETRO_MODE_TRUTH: return truth;
     case RETRO_MODE_FIXED: return fixed;
     case RETRO_MODE_LOD: return lod_plain;
