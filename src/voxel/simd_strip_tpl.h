@@ -121,19 +121,17 @@ static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {
 #undef SIMD_STRIP
 #undef SIMD_STRIP_NAME
 
-static void SIMD_NAME(course_maps)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
-                                   float *qx, float *qy, int u0, int u1)
-{
-    for (int u = u0; u < u1; u++)
-        SIMD_NAME(course_column)(f, sf, k, qx, qy, u, 0);
-}
-
-static void SIMD_NAME(course_packed)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
-                                     float *qx, float *qy, int u0, int u1)
-{
-    for (int u = u0; u < u1; u++)
-        SIMD_NAME(course_column)(f, sf, k, qx, qy, u, 1);
-}
+/* Mode course's strips, one per map read (packed or not). */
+#define SIMD_COURSE_STRIP(name, packed)                                                                  \
+    static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, \
+                                float *qx, float *qy, int u0, int u1)                                    \
+    {                                                                                                    \
+        for (int u = u0; u < u1; u++)                                                                    \
+            SIMD_NAME(course_column)(f, sf, k, qx, qy, u, packed);                                       \
+    }
+SIMD_COURSE_STRIP(course_maps, 0)
+SIMD_COURSE_STRIP(course_packed, 1)
+#undef SIMD_COURSE_STRIP
 
 /* Columns [u0, u1) of a frame retro_simd_check() accepted. */
 static void SIMD_NAME(render_strip)(const retro_frame *f, const retro_simd_frame *sf, float *qx, float *qy, int u0,
