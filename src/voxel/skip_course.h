@@ -108,13 +108,6 @@ RETRO_HELPER void retro_course_col_init(retro_course_col *c, const retro_frame *
     c->level = lmin;
 }
 
-/* floor(q) mod P in [0, P). */
-RETRO_HELPER int retro_course_wrap(int I, int P)
-{
-    int i = I % P;
-    return i < 0 ? i + P : i;
-}
-
 /* The first distance in [d, d_end) whose sample in this column may rise above y (y < H);
  * d_end when none may. Levels go up after a skip and down after a window that may paint;
  * below c->lmin the probe gives up. */
@@ -142,7 +135,7 @@ retro_skip_course(const retro_frame *f, retro_course_col *c, const float *qx, co
         const int Imin = (I0 < I1 ? I0 : I1) - E, Jmin = (J0 < J1 ? J0 : J1) - E;
         const int wi = (I0 < I1 ? I1 - I0 : I0 - I1) + 2 * E + 1, wj = (J0 < J1 ? J1 - J0 : J0 - J1) + 2 * E + 1;
         if (wi <= B && wj <= B) {
-            const int bi = retro_course_wrap(Imin, P) >> L, bj = retro_course_wrap(Jmin, P) >> L;
+            const int bi = retro_skip_wrap(Imin, P, 0) >> L, bj = retro_skip_wrap(Jmin, P, 0) >> L;
             const int64_t dh = (int64_t)p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi] - height;
             if (retro_course_row(f->cw2, f->ch2, f->H, dh, dh >= 0 ? d : d1) <= y) {
                 d = d1 + 1;
