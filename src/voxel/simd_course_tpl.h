@@ -1,11 +1,31 @@
 /* Part of simd_strip_tpl.h, whose contract applies, included by it once per ISA file: a column
  * of mode course, its lanes consecutive distances. */
 
+/* Rows e+1..v of a column of the tile (col[r - 1] is row r): whole vectors from e on. The
+ * stores past v land on rows the column's next span or its sky fill writes again, since a span
+ * starts where the last one ended (the y-buffer), or in the column's padding. */
+RETRO_SIMD_INLINE void SIMD_NAME(tile_span)(uint32_t *col, int e, int v, uint32_t colour)
+{
+    const simd_i32 c = v_set1_i((int)colour);
+    for (int i = e; i < v; i += SIMD_LANES)
+        v_store_i(col + i, c);
+}
+
+/* Rows e+1..v of column u get colour: into the tile's column col, or (col NULL) into out. */
+RETRO_SIMD_INLINE void SIMD_NAME(course_span)(const retro_frame *f, uint32_t *col, int u, int e, int v,
+                                              uint32_t colour)
+{
+    if (col)
+        SIMD_NAME(tile_span)(col, e, v, colour);
+    else
+        retro_simd_span(f, u, e, v, colour);
+}
+
 /* The y-buffer pass over distances d..d+LANES-1 of column u: lane l paints rows e+1..v_l, as a
  * column span, when v_l exceeds e = max(y, v_<l), an exclusive prefix max in log2(LANES)
  * shifted maxes. Returns the new y-buffer. */
-static inline int SIMD_NAME(course_scan)(const retro_frame *f, int u, int y, simd_i32 v, simd_i32 at,
-                                         const int packed)
+RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col, int u, int y, simd_i32 v,
+                                             simd_i32 at, const int packed)
 {
     const simd_i32 fill = v_set1_i(y);
     simd_i32 p = v_max_i(v, fill);
@@ -28,7 +48,7 @@ static inline int SIMD_NAME(course_scan)(const retro_frame *f, int u, int y, sim
         v_store_i((int *)as, at);
         for (; up; up &= up - 1) {
             int l = __builtin_ctz(up);
-            retro_simd_span(f, u, es[l], vs[l], SIMD_NAME(colour_of)(f, as[l], packed));
+            SIMD_NAME(course_span)(f, col, u, es[l], vs[l], SIMD_NAME(colour_of)(f, as[l], packed));
         }
     }
     return v_last_i(p);
@@ -55,10 +75,11 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
  * positions on entry and the next column's on return: every accumulator is sampled (until the
  * early exit), then all advance, the additions of SEMANTICS.md in their order. The loads of the
  * next two vectors issue before the scan's branches: the cell gathers, not the arithmetic, are
- * what a vector waits on. This column does not skip (docs/SKIPPING.md, mode course). */
+ * what a vector waits on. This column does not skip (docs/SKIPPING.md, mode course). It paints
+ * into col, a column of the strip's tile (course_group), or into out when col is NULL. */
 RETRO_SIMD_INLINE void
 SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, float *qx,
-                         float *qy, int u, const int packed)
+                         float *qy, uint32_t *col, int u, const int packed)
 {
     const int D = f->D;
     int y = 0, d = 1;
@@ -72,9 +93,9 @@ SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const
         v0 = v1;
         if (d + 2 * SIMD_LANES < D)
             v1 = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + 2 * SIMD_LANES, &at1, packed);
-        y = SIMD_NAME(course_scan)(f, u, y, v_d, at_d, packed);
+        y = SIMD_NAME(course_scan)(f, col, u, y, v_d, at_d, packed);
     }
-    retro_simd_span(f, u, y, f->H, f->sky);
+    SIMD_NAME(course_span)(f, col, u, y, f->H, f->sky);
     for (int e = 1; e < D; e += SIMD_LANES) {
         const int n = D - e;
         const simd_mask live = v_first(n);
@@ -82,4 +103,29 @@ SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const
         v_store_first_f(qx + e, n, live, v_add_f(x, v_load_first_f(f->sx + e, n, live)));
         v_store_first_f(qy + e, n, live, v_add_f(z, v_load_first_f(f->sy + e, n, live)));
     }
+}
+
+/* Columns u..u+n-1 (n <= RETRO_SIMD_COURSE_GROUP) of mode course. Painted straight into out, a
+ * column's rows lie W pixels apart, one cache line each, and its spans are scalar stores in
+ * loops of data-dependent length; painted into tile (one column every th >= H + LANES
+ * entries, row r at r - 1), they are whole-vector stores into a few lines, and out gets each
+ * pixel once afterwards, row by row, n adjacent pixels at a time. The tile is the caller's
+ * (NULL: paint into out). */
+RETRO_SIMD_INLINE void SIMD_NAME(course_group)(const retro_frame *f, const retro_simd_frame *sf,
+                                               const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *tile,
+                                               size_t th, int u, int n, const int packed)
+{
+    if (!tile) {
+        for (int c = 0; c < n; c++)
+            SIMD_NAME(course_column)(f, sf, k, qx, qy, NULL, u + c, packed);
+        return;
+    }
+    for (int c = 0; c < n; c++)
+        SIMD_NAME(course_column)(f, sf, k, qx, qy, tile + (size_t)c * th, u + c, packed);
+    uint32_t *out = f->out;
+    const ptrdiff_t W = f->W;
+    ptrdiff_t i = (ptrdiff_t)(f->H - 1) * W + u;
+    for (int r = 0; r < f->H; r++, i -= W)
+        for (int c = 0; c < n; c++)
+            RETRO_PUT(out, (size_t)(i + c), tile[(size_t)c * th + (size_t)r]);
 }

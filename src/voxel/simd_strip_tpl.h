@@ -121,13 +121,20 @@ static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {
 #undef SIMD_STRIP
 #undef SIMD_STRIP_NAME
 
-/* Mode course's strips, one per map read (packed or not). */
+/* Mode course's strips, one per map read (packed or not). The tile of course_group lives on the
+ * strip's stack (no allocation per frame, nothing shared between threads); frames taller than
+ * RETRO_SIMD_COURSE_ROWS paint straight into out. */
 #define SIMD_COURSE_STRIP(name, packed)                                                                  \
     static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, \
                                 float *qx, float *qy, int u0, int u1)                                    \
     {                                                                                                    \
-        for (int u = u0; u < u1; u++)                                                                    \
-            SIMD_NAME(course_column)(f, sf, k, qx, qy, u, packed);                                       \
+        uint32_t tile[RETRO_SIMD_COURSE_GROUP * (RETRO_SIMD_COURSE_ROWS + SIMD_LANES)];                   \
+        const size_t th = (size_t)f->H + SIMD_LANES;                                                     \
+        uint32_t *t = f->H <= RETRO_SIMD_COURSE_ROWS ? tile : NULL;                                      \
+        for (int u = u0; u < u1; u += RETRO_SIMD_COURSE_GROUP)                                           \
+            SIMD_NAME(course_group)(f, sf, k, qx, qy, t, th, u,                                          \
+                                    u1 - u < RETRO_SIMD_COURSE_GROUP ? u1 - u : RETRO_SIMD_COURSE_GROUP, \
+                                    packed);                                                             \
     }
 SIMD_COURSE_STRIP(course_maps, 0)
 SIMD_COURSE_STRIP(course_packed, 1)
