@@ -210,8 +210,8 @@ def mesh_block(table, scenes, voxel_ms, geo, verdict):
         lines.append(f"| `{k}` | " + " | ".join(f"{v[s]:.2f}" for s in sc)
                      + f" | {g[k]:.2f} | {fmt(g['mesh-zbuffer'] / g[k])} | {fmt(g[k] / vox)} slower |")
     lines += ["", f"- **Mesh against voxel.** The fastest mesh kernel, `{best}`, takes {g[best]:.1f} ms per "
-              f"frame (geometric mean over the scenes), {fmt(g[best] / vox)} the time of the fastest voxel "
-              f"kernel (`omp`, 2 threads, {vox:.3f} ms) at the same size and distance."]
+              f"frame (geometric mean over the scenes), {fmt(g[best] / vox)} the time of the voxel kernel "
+              f"`omp` on 2 threads ({vox:.3f} ms) at the same size and distance."]
     if best1:
         r1 = g["mesh-zbuffer"] / g[best1]
         lines.append(f"- **Target: best single-thread mesh SIMD ≥ 5× `mesh-zbuffer`.** `{best1}`: {fmt(r1)} — "
