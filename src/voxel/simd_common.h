@@ -58,9 +58,10 @@ typedef struct retro_simd_frame {
 #define RETRO_SIMD_COURSE_BOUND 4194304.0 /* 2^22, leaving 2^22 for the rounding of W steps */
 /* Mode course's columns paint into a tile of RETRO_SIMD_COURSE_GROUP columns (64 bytes of a row
  * of out) and RETRO_SIMD_COURSE_ROWS rows at most, on the strip's stack (simd_course_tpl.h's
- * course_group): about 140 KB, well inside a thread's stack. Taller frames paint into out. */
+ * course_group): about 70 KB, kept that small because the strip may run on a thread whose
+ * stack is small (musl's default is 128 KB). Taller frames paint into out. */
 #define RETRO_SIMD_COURSE_GROUP 16
-#define RETRO_SIMD_COURSE_ROWS 2160
+#define RETRO_SIMD_COURSE_ROWS 1080
 /* Mode course: a truncated row beyond +-2^20 clamps to H or 0 whatever H/2 adds (H <= 2^14),
  * so the vector kernels clamp the float there and convert it in int32. */
 #define RETRO_SIMD_ROW_CLAMP 1048576.0f
