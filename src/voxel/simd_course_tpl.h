@@ -115,13 +115,10 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_group)(const retro_frame *f, const retro
                                                const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *tile,
                                                size_t th, int u, int n, const int packed)
 {
-    if (!tile) {
-        for (int c = 0; c < n; c++)
-            SIMD_NAME(course_column)(f, sf, k, qx, qy, NULL, u + c, packed);
-        return;
-    }
     for (int c = 0; c < n; c++)
-        SIMD_NAME(course_column)(f, sf, k, qx, qy, tile + (size_t)c * th, u + c, packed);
+        SIMD_NAME(course_column)(f, sf, k, qx, qy, tile ? tile + (size_t)c * th : NULL, u + c, packed);
+    if (!tile)
+        return;
     uint32_t *out = f->out;
     const ptrdiff_t W = f->W;
     ptrdiff_t i = (ptrdiff_t)(f->H - 1) * W + u;
