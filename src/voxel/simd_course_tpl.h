@@ -65,8 +65,17 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
     SIMD_COUNT_LANES(evaluated, n < SIMD_LANES ? n : SIMD_LANES);
     simd_f32 x = v_load_first_f(qx + d, n, live), z = v_load_first_f(qy + d, n, live);
     /* Dead lanes sample cell 0 (their q is 0). */
-    simd_i32 h = SIMD_NAME(heights)(f, sf, k, SIMD_NAME(course_wrap)(x, k), SIMD_NAME(course_wrap)(z, k), at,
-                                    packed);
+    const simd_i32 i = SIMD_NAME(course_wrap)(x, k), j = SIMD_NAME(course_wrap)(z, k);
+    simd_i32 h;
+    if (packed || f->S < 2) {
+        h = SIMD_NAME(heights)(f, sf, k, i, j, at, packed);
+    } else {
+        /* A cell of the course's torus has i, j <= S - 2, so its row-major index is at most
+         * S*S - S - 2 and the bytes after it up to index + 3 <= S*S - S + 1 < S*S lie in the
+         * map (S >= 2): the padded gather reads only the height map's own bytes. */
+        *at = v_add_i(v_mullo_i(j, k->S), i);
+        h = v_gather_bytes_pad(f->height_map, *at);
+    }
     simd_f32 fd = v_add_f(v_set1_f((float)d), v_iota_f());
     return v_keep_i(live, SIMD_NAME(course_project)(h, fd, k));
 }
