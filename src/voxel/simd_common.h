@@ -62,6 +62,9 @@ typedef struct retro_simd_frame {
  * stack is small (musl's default is 128 KB). Taller frames paint into out. */
 #define RETRO_SIMD_COURSE_GROUP 16
 #define RETRO_SIMD_COURSE_ROWS 1080
+/* Mode course walks this many of a group's columns in one loop (course_cols), independent
+ * chains whose gathers overlap; it divides RETRO_SIMD_COURSE_GROUP. */
+#define RETRO_SIMD_COURSE_CHAINS 4
 /* Mode course: a truncated row beyond +-2^20 clamps to H or 0 whatever H/2 adds (H <= 2^14),
  * so the vector kernels clamp the float there and convert it in int32. */
 #define RETRO_SIMD_ROW_CLAMP 1048576.0f

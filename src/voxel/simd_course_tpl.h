@@ -58,12 +58,16 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
  * positions qx, qy hold, and in *at what the scan needs for colours. */
 RETRO_SIMD_INLINE simd_i32
 SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
-                         const float *qx, const float *qy, int d, simd_i32 *at, const int packed)
+                         const float *qx, const float *qy, int d, simd_i32 *at, const int packed, const int steps)
 {
     const int n = f->D - d;
     const simd_mask live = v_first(n);
     SIMD_COUNT_LANES(evaluated, n < SIMD_LANES ? n : SIMD_LANES);
     simd_f32 x = v_load_first_f(qx + d, n, live), z = v_load_first_f(qy + d, n, live);
+    for (int c = 0; c < steps; c++) { /* a later column's positions: the advance's very additions */
+        x = v_add_f(x, v_load_first_f(f->sx + d, n, live));
+        z = v_add_f(z, v_load_first_f(f->sy + d, n, live));
+    }
     /* Dead lanes sample cell 0 (their q is 0). */
     const simd_i32 i = SIMD_NAME(course_wrap)(x, k), j = SIMD_NAME(course_wrap)(z, k);
     simd_i32 h;
@@ -80,37 +84,74 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
     return v_keep_i(live, SIMD_NAME(course_project)(h, fd, k));
 }
 
-/* Column u of mode course: docs/KERNELS.md's lanes = distances. qx, qy hold the column's
- * positions on entry and the next column's on return: every accumulator is sampled (until the
- * early exit), then all advance, the additions of SEMANTICS.md in their order. The loads of the
- * next two vectors issue before the scan's branches: the cell gathers, not the arithmetic, are
- * what a vector waits on. This column does not skip (docs/SKIPPING.md, mode course). It paints
- * into col, a column of the strip's tile (course_group), or into out when col is NULL. */
-RETRO_SIMD_INLINE void
-SIMD_NAME(course_column)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, float *qx,
-                         float *qy, uint32_t *col, int u, const int packed)
+/* The chains' loops run unrolled, so that their vectors stay in registers (-O2 alone keeps
+ * the arrays in memory). */
+#define RETRO_CHAINS_UNROLLED _Pragma("GCC unroll 4")
+
+/* Columns u..u+N-1 (N <= RETRO_SIMD_COURSE_CHAINS) of mode course: docs/KERNELS.md's lanes =
+ * distances. qx, qy hold column u's positions on entry and column u+N's on return. Column u+c
+ * samples column u's accumulators plus c steps, the very additions of SEMANTICS.md in their
+ * order, so it samples what column-by-column stepping would; afterwards every accumulator
+ * advances N times, in the same order (until its early exit a column samples, and every
+ * accumulator advances, past the exit too). The N columns are independent chains walked in one
+ * loop, and each column's next two vectors are sampled before the scans' branches: the cell
+ * gathers, not the arithmetic, are what a vector waits on, and one column's scan runs while
+ * the others' gathers are in flight. A column stops at its own early exit. This column does not
+ * skip (docs/SKIPPING.md, mode course). Column c paints into cols[c], a column of the strip's
+ * tile (course_group), or into out when cols[c] is NULL. */
+RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_simd_frame *sf,
+                                              const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *const *cols,
+                                              int u, const int packed, const int N)
 {
     const int D = f->D;
-    int y = 0, d = 1;
-    simd_i32 at0, v0 = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d, &at0, packed);
-    simd_i32 at1 = v_zero_i(), v1 = v_zero_i();
-    if (d + SIMD_LANES < D)
-        v1 = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + SIMD_LANES, &at1, packed);
-    for (; d < D && y < f->vcap[d]; d += SIMD_LANES) {
-        simd_i32 at_d = at0, v_d = v0;
-        at0 = at1;
-        v0 = v1;
-        if (d + 2 * SIMD_LANES < D)
-            v1 = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + 2 * SIMD_LANES, &at1, packed);
-        y = SIMD_NAME(course_scan)(f, col, u, y, v_d, at_d, packed);
+    int y[RETRO_SIMD_COURSE_CHAINS] = {0}, d = 1;
+    simd_i32 at0[RETRO_SIMD_COURSE_CHAINS], v0[RETRO_SIMD_COURSE_CHAINS];
+    simd_i32 at1[RETRO_SIMD_COURSE_CHAINS], v1[RETRO_SIMD_COURSE_CHAINS];
+    RETRO_CHAINS_UNROLLED
+    for (int c = 0; c < N; c++) {
+        v0[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d, &at0[c], packed, c);
+        at1[c] = v1[c] = v_zero_i();
+        if (d + SIMD_LANES < D)
+            v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + SIMD_LANES, &at1[c], packed, c);
     }
-    SIMD_NAME(course_span)(f, col, u, y, f->H, f->sky);
+    for (; d < D; d += SIMD_LANES) {
+        const int cap = f->vcap[d], more = d + 2 * SIMD_LANES < D;
+        int live = 0;
+        simd_i32 at[RETRO_SIMD_COURSE_CHAINS], v[RETRO_SIMD_COURSE_CHAINS];
+        RETRO_CHAINS_UNROLLED
+    for (int c = 0; c < N; c++) {
+            at[c] = at0[c];
+            v[c] = v0[c];
+            if (y[c] < cap) {
+                live |= 1 << c;
+                at0[c] = at1[c];
+                v0[c] = v1[c];
+                if (more)
+                    v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + 2 * SIMD_LANES, &at1[c], packed, c);
+            }
+        }
+        if (!live)
+            break;
+        RETRO_CHAINS_UNROLLED
+    for (int c = 0; c < N; c++)
+            if (live >> c & 1)
+                y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c], packed);
+    }
+    RETRO_CHAINS_UNROLLED
+    for (int c = 0; c < N; c++)
+        SIMD_NAME(course_span)(f, cols[c], u + c, y[c], f->H, f->sky);
     for (int e = 1; e < D; e += SIMD_LANES) {
         const int n = D - e;
-        const simd_mask live = v_first(n);
-        simd_f32 x = v_load_first_f(qx + e, n, live), z = v_load_first_f(qy + e, n, live);
-        v_store_first_f(qx + e, n, live, v_add_f(x, v_load_first_f(f->sx + e, n, live)));
-        v_store_first_f(qy + e, n, live, v_add_f(z, v_load_first_f(f->sy + e, n, live)));
+        const simd_mask m = v_first(n);
+        const simd_f32 sx = v_load_first_f(f->sx + e, n, m), sy = v_load_first_f(f->sy + e, n, m);
+        simd_f32 x = v_load_first_f(qx + e, n, m), z = v_load_first_f(qy + e, n, m);
+        RETRO_CHAINS_UNROLLED
+    for (int c = 0; c < N; c++) {
+            x = v_add_f(x, sx);
+            z = v_add_f(z, sy);
+        }
+        v_store_first_f(qx + e, n, m, x);
+        v_store_first_f(qy + e, n, m, z);
     }
 }
 
@@ -124,14 +165,20 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_group)(const retro_frame *f, const retro
                                                const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *tile,
                                                size_t th, int u, int n, const int packed)
 {
+    uint32_t *cols[RETRO_SIMD_COURSE_GROUP];
     for (int c = 0; c < n; c++)
-        SIMD_NAME(course_column)(f, sf, k, qx, qy, tile ? tile + (size_t)c * th : NULL, u + c, packed);
+        cols[c] = tile ? tile + (size_t)c * th : NULL;
+    int c = 0;
+    for (; c + RETRO_SIMD_COURSE_CHAINS <= n; c += RETRO_SIMD_COURSE_CHAINS)
+        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, packed, RETRO_SIMD_COURSE_CHAINS);
+    for (; c < n; c++)
+        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, packed, 1);
     if (!tile)
         return;
     uint32_t *out = f->out;
     const ptrdiff_t W = f->W;
     ptrdiff_t i = (ptrdiff_t)(f->H - 1) * W + u;
     for (int r = 0; r < f->H; r++, i -= W)
-        for (int c = 0; c < n; c++)
+        for (c = 0; c < n; c++)
             RETRO_PUT(out, (size_t)(i + c), tile[(size_t)c * th + (size_t)r]);
 }
