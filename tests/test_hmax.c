@@ -1,0 +1,37 @@
+/* retro_hmax_get: the maximum of every cell, whichever lane of the vector scan or tail holds
+ * it; a maximum it missed would move every frame's early exit (frame.c's vcap). */
+#include <criterion/criterion.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hmax_cache.h"
+
+Test(hmax, every_position_and_size)
+{
+    for (int S = 1; S <= 40; S++) {
+        size_t n = (size_t)S * (size_t)S;
+        uint8_t *map = malloc(n);
+        cr_assert_not_null(map);
+        for (size_t at = 0; at < n; at++) {
+            for (size_t i = 0; i < n; i++)
+                map[i] = (uint8_t)(i * 37 % 200); /* below the planted maximum */
+            map[at] = (uint8_t)(201 + at % 55);
+            retro_hmax_cache hc = {0};
+            cr_assert_eq(retro_hmax_get(&hc, map, S), map[at], "S %d, maximum at %zu", S, at);
+        }
+        free(map);
+    }
+}
+
+Test(hmax, cached_until_stale)
+{
+    uint8_t map[64 * 64];
+    memset(map, 9, sizeof map);
+    retro_hmax_cache hc = {0};
+    cr_assert_eq(retro_hmax_get(&hc, map, 64), 9);
+    map[4095] = 255;
+    cr_assert_eq(retro_hmax_get(&hc, map, 64), 9, "the same map and size: the cached value");
+    retro_hmax_stale(&hc);
+    cr_assert_eq(retro_hmax_get(&hc, map, 64), 255);
+    cr_assert_eq(retro_hmax_get(&hc, map, 63), 9, "a new size scans 63*63 cells again");
+}
