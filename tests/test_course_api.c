@@ -202,3 +202,39 @@ Test(course, naive_matches_references)
 }
 
 Test(course, bonus_implemented) { cr_assert_eq(bonus_implemented(), 1); }
+
+/* render() keeps nothing it learnt from the maps between calls: after a tower far above the
+ * old maximum is written into the map in place, at the same address, the next frame draws it
+ * as the naive kernel does. With the old maximum kept, the columns' early exit would stop them
+ * short of the tower. */
+Test(course, render_sees_a_map_edited_in_place)
+{
+    enum { S = 256, W = 160, H = 120, D = 200 };
+    uint8_t *hm = malloc((size_t)S * S);
+    uint32_t *cm = malloc(sizeof(uint32_t) * S * S);
+    uint32_t *before = malloc(sizeof(uint32_t) * W * H), *after = malloc(sizeof(uint32_t) * W * H);
+    uint32_t *want = malloc(sizeof(uint32_t) * W * H);
+    cr_assert(hm && cm && before && after && want);
+    for (int j = 0; j < S; j++)
+        for (int i = 0; i < S; i++) {
+            hm[j * S + i] = (uint8_t)(85 + (i * 7 + j * 13) % 5); /* just below the camera */
+            cm[j * S + i] = ((uint32_t)i * 2654435761u ^ (uint32_t)j * 40503u) & 0xffffff00u;
+        }
+    ctx_t c = {W, H, S, D, 0x66a3ff00u, hm, cm, before};
+    player_t p = {128.5f, 128.5f, 0, 90, 0, 0, 0};
+    render(&p, &c);
+    for (int j = 100; j < 157; j++) /* 140..160 cells ahead (+x), across the (S-1)-torus seam */
+        for (int i = 268; i < 289; i++)
+            hm[j * S + i % (S - 1)] = 250;
+    c.out = after;
+    render(&p, &c);
+    c.out = want;
+    render_with("naive", RETRO_MODE_COURSE, &p, &c);
+    cr_assert(memcmp(before, want, sizeof(uint32_t) * W * H) != 0, "the tower must show in the frame");
+    cr_assert(!memcmp(after, want, sizeof(uint32_t) * W * H), "render() drew the edited map unlike naive");
+    free(hm);
+    free(cm);
+    free(before);
+    free(after);
+    free(want);
+}

@@ -4,7 +4,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ctx.h"
 #include "hmax_cache.h"
+#include "kernels.h"
+#include "retro.h"
 
 Test(hmax, every_position_and_size)
 {
@@ -34,4 +37,32 @@ Test(hmax, cached_until_stale)
     retro_hmax_stale(&hc);
     cr_assert_eq(retro_hmax_get(&hc, map, 64), 255);
     cr_assert_eq(retro_hmax_get(&hc, map, 63), 9, "a new size scans 63*63 cells again");
+}
+
+/* The submission's scan, split between the pthreads kernel's threads: each thread's slice,
+ * the last one short, for 1 to 4 threads. */
+Test(hmax, split_between_threads)
+{
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert_not_null(rc);
+    const int sizes[] = {2, 3, 17, 64, 100, 257};
+    for (int T = 1; T <= 4; T++) {
+        rc->threads = T;
+        for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+            const int S = sizes[k];
+            const size_t n = (size_t)S * (size_t)S;
+            uint8_t *map = malloc(n);
+            cr_assert_not_null(map);
+            const size_t ats[] = {0, n / 4, n / 2, n / 2 + 1, 3 * n / 4, n - 65, n - 2, n - 1};
+            for (size_t a = 0; a < sizeof ats / sizeof ats[0]; a++) {
+                const size_t at = ats[a] < n ? ats[a] : n - 1;
+                memset(map, 3, n);
+                map[at] = 99;
+                retro_pthreads_map_max(rc, map, S);
+                cr_assert_eq(retro_hmax_get(&rc->hmax, map, S), 99, "%d threads, S %d, maximum at %zu", T, S, at);
+            }
+            free(map);
+        }
+    }
+    retro_ctx_free(rc);
 }

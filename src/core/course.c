@@ -49,7 +49,7 @@ void draw_line(ctx_t *c, int u, int v_from, int v_to, uint32_t color)
  * are made once, not per frame; the exit handler frees it and joins the workers (leak-free
  * under ASan). The maps may be freed and others loaded at the same addresses between calls,
  * so the caches keyed by map pointer are dropped every call (the course frame keeps none but
- * the map's maximum, recomputed as a fresh context would). A call made while another is
+ * the map's maximum, recomputed every call). A call made while another is
  * rendering (from another thread) or after the exit handler ran uses a context of its own.
  * The kernel is called directly: the submission has no kernel table. */
 static retro_ctx *course_rc;
@@ -69,6 +69,11 @@ static void course_exit(void)
 static void render_once(retro_ctx *rc, const player_t *p, ctx_t *c)
 {
     retro_ctx_map_changed(rc);
+    /* The map's maximum (every frame's early exit needs it) is scanned anew each call, split
+     * between the pool's threads, and frame setup finds it cached: read by one thread, the
+     * whole map is a sizeable share of a course frame. */
+    if (c && c->height_map && c->map_size >= 2 && c->map_size <= RETRO_MAX_MAP)
+        retro_pthreads_map_max(rc, c->height_map, c->map_size);
     if (retro_frame_setup(rc, RETRO_MODE_COURSE, p, c) == RETRO_OK)
         retro_kernel_pthreads(&rc->frame, rc);
 }

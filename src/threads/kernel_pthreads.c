@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "env.h"
+#include "hmax_cache.h"
 #include "kernels.h"
 #include "pt_pool.h"
 
@@ -56,14 +57,62 @@ static int pt_threads(const retro_ctx *rc)
     return t > RETRO_PT_MAX_THREADS ? RETRO_PT_MAX_THREADS : (int)t;
 }
 
-void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
+/* rc's pool for the thread count asked, made or remade when that count changed (NULL: out of
+ * memory, the callers then run on one thread). */
+static retro_pt_pool *pt_pool_of(retro_ctx *rc)
 {
-    const retro_frame *f = frame;
     int T = pt_threads(rc);
     if (!rc->pt_pool || retro_pt_pool_asked(rc->pt_pool) != T) {
         retro_pt_pool_free(rc->pt_pool);
         rc->pt_pool = retro_pt_pool_new(T);
     }
+    return rc->pt_pool;
+}
+
+/* The map-maximum job: thread t scans slice t of T, whole 64-byte lines but the last. */
+typedef struct {
+    const uint8_t *map;
+    size_t n;
+    int T;
+    struct {
+        _Alignas(64) uint8_t value; /* a line each: no thread writes another's line */
+    } max[RETRO_PT_MAX_THREADS];
+} pt_max_job;
+
+static void pt_max_task(void *arg, int t)
+{
+    pt_max_job *job = arg;
+    const size_t T = (size_t)job->T, per = ((job->n + T - 1) / T + 63) / 64 * 64;
+    size_t lo = per * (size_t)t, hi = (size_t)t + 1 == T ? job->n : lo + per;
+    lo = lo < job->n ? lo : job->n;
+    hi = hi < job->n ? hi : job->n;
+    job->max[t].value = retro_map_max(job->map + lo, hi - lo);
+}
+
+void retro_pthreads_map_max(retro_ctx *rc, const uint8_t *map, int S)
+{
+    retro_pt_pool *pool = pt_pool_of(rc);
+    const size_t n = (size_t)S * (size_t)S;
+    uint8_t m;
+    if (!pool || retro_pt_pool_threads(pool) == 1) {
+        m = retro_map_max(map, n);
+    } else {
+        pt_max_job job = {.map = map, .n = n, .T = retro_pt_pool_threads(pool)};
+        retro_pt_pool_run(pool, pt_max_task, &job);
+        m = 0;
+        for (int t = 0; t < job.T; t++)
+            m = job.max[t].value > m ? job.max[t].value : m;
+    }
+    rc->hmax.map = map;
+    rc->hmax.size = S;
+    rc->hmax.value = m;
+}
+
+void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
+{
+    const retro_frame *f = frame;
+    int T;
+    pt_pool_of(rc);
     /* Each thread's two accumulator arrays start on their own 64-byte line. */
     size_t stride = ((size_t)f->D + 15) / 16 * 16;
     T = rc->pt_pool ? retro_pt_pool_threads(rc->pt_pool) : 1;

@@ -16,7 +16,7 @@ static inline retro_v16u8 v16_max(retro_v16u8 a, retro_v16u8 b)
 /* Callers that cannot keep the cache (the submission drops it every call) scan the whole map
  * every frame, so the scan keeps four independent maxima in flight: one running maximum is a
  * chain of dependent steps, and at -O2 the compiler keeps it one byte at a time. */
-static uint8_t map_max(const uint8_t *map, size_t n)
+uint8_t retro_map_max(const uint8_t *map, size_t n)
 {
     retro_v16u8 a0 = {0}, a1 = {0}, a2 = {0}, a3 = {0};
     size_t i = 0;
@@ -43,7 +43,7 @@ static uint8_t map_max(const uint8_t *map, size_t n)
 int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S)
 {
     if (hc->map != map || hc->size != S) {
-        hc->value = map_max(map, (size_t)S * (size_t)S);
+        hc->value = retro_map_max(map, (size_t)S * (size_t)S);
         hc->map = map;
         hc->size = S;
     }

@@ -3,6 +3,7 @@
 #ifndef RETRO_HMAX_CACHE_H
 #define RETRO_HMAX_CACHE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* One context's cache (retro_ctx.hmax). All zero is empty. */
@@ -12,6 +13,8 @@ typedef struct retro_hmax_cache {
     int value;
 } retro_hmax_cache;
 
+/* The largest of the n bytes at map (0 when n is 0). */
+uint8_t retro_map_max(const uint8_t *map, size_t n);
 /* The maximum of map (S*S cells), scanned only when map or S differ from the last call. */
 int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S);
 /* The next call scans again (the map was edited in place). */
