@@ -85,7 +85,7 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
 }
 
 /* The chains' loops run unrolled, so that their vectors stay in registers (-O2 alone keeps
- * the arrays in memory). */
+ * the arrays in memory); the count is at least RETRO_SIMD_COURSE_CHAINS. */
 #define RETRO_CHAINS_UNROLLED _Pragma("GCC unroll 4")
 
 /* Columns u..u+N-1 (N <= RETRO_SIMD_COURSE_CHAINS) of mode course: docs/KERNELS.md's lanes =
@@ -119,7 +119,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         int live = 0;
         simd_i32 at[RETRO_SIMD_COURSE_CHAINS], v[RETRO_SIMD_COURSE_CHAINS];
         RETRO_CHAINS_UNROLLED
-    for (int c = 0; c < N; c++) {
+        for (int c = 0; c < N; c++) {
             at[c] = at0[c];
             v[c] = v0[c];
             if (y[c] < cap) {
@@ -133,7 +133,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         if (!live)
             break;
         RETRO_CHAINS_UNROLLED
-    for (int c = 0; c < N; c++)
+        for (int c = 0; c < N; c++)
             if (live >> c & 1)
                 y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c], packed);
     }
@@ -146,7 +146,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         const simd_f32 sx = v_load_first_f(f->sx + e, n, m), sy = v_load_first_f(f->sy + e, n, m);
         simd_f32 x = v_load_first_f(qx + e, n, m), z = v_load_first_f(qy + e, n, m);
         RETRO_CHAINS_UNROLLED
-    for (int c = 0; c < N; c++) {
+        for (int c = 0; c < N; c++) {
             x = v_add_f(x, sx);
             z = v_add_f(z, sy);
         }
