@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "ctx.h"
+#include "frame.h"
 #include "hmax_cache.h"
 #include "kernels.h"
 #include "retro.h"
@@ -39,6 +40,40 @@ Test(hmax, cached_until_stale)
     cr_assert_eq(retro_hmax_get(&hc, map, 63), 9, "a new size scans 63*63 cells again");
 }
 
+/* A context's map_scan is the scan frame setup fills its stale cache with (the submission's
+ * split scan), called once per stale map, with the context as its argument. */
+static int scans;
+static uint8_t counting_scan(void *arg, const uint8_t *map, size_t n)
+{
+    scans++;
+    cr_assert_not_null(arg);
+    return retro_map_max(map, n);
+}
+
+Test(hmax, frame_setup_scans_with_the_contexts_scan)
+{
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert_not_null(rc);
+    rc->map_scan = counting_scan;
+    enum { S = 32, W = 8, H = 6 };
+    static uint8_t heights[S * S];
+    static uint32_t colours[S * S], out[W * H];
+    memset(heights, 7, sizeof heights);
+    heights[S * S - 1] = 250;
+    player_t p = {.x = 5.0f, .y = 5.0f, .height = 100, .angle = 0};
+    ctx_t c = {.height_map = heights, .color_map = colours, .map_size = S, .distance = 20,
+               .scr_width = W, .scr_height = H, .out = out};
+    cr_assert_eq(retro_frame_setup(rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
+    cr_assert_eq(scans, 1);
+    cr_assert_eq(retro_ctx_frame(rc)->hmax, 250, "the scan's maximum reaches the frame");
+    cr_assert_eq(retro_frame_setup(rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
+    cr_assert_eq(scans, 1, "a cached maximum is not scanned again");
+    retro_ctx_map_changed(rc);
+    cr_assert_eq(retro_frame_setup(rc, RETRO_MODE_EXACT, &p, &c), RETRO_OK);
+    cr_assert_eq(scans, 2, "a stale cache is scanned by the context's scan");
+    retro_ctx_free(rc);
+}
+
 /* The submission's scan, split between the pthreads kernel's threads: each thread's slice,
  * the last one short, for 1 to 4 threads. */
 Test(hmax, split_between_threads)
@@ -58,8 +93,7 @@ Test(hmax, split_between_threads)
                 const size_t at = ats[a] < n ? ats[a] : n - 1;
                 memset(map, 3, n);
                 map[at] = 99;
-                retro_pthreads_map_max(rc, map, S);
-                cr_assert_eq(retro_hmax_get(&rc->hmax, map, S), 99, "%d threads, S %d, maximum at %zu", T, S, at);
+                cr_assert_eq(retro_pthreads_map_scan(rc, map, n), 99, "%d threads, S %d, maximum at %zu", T, S, at);
             }
             free(map);
         }

@@ -69,11 +69,10 @@ static void course_exit(void)
 static void render_once(retro_ctx *rc, const player_t *p, ctx_t *c)
 {
     retro_ctx_map_changed(rc);
-    /* The map's maximum (every frame's early exit needs it) is scanned anew each call, split
-     * between the pool's threads, and frame setup finds it cached: read by one thread, the
-     * whole map is a sizeable share of a course frame. */
-    if (c && c->height_map && c->map_size >= 2 && c->map_size <= RETRO_MAX_MAP)
-        retro_pthreads_map_max(rc, c->height_map, c->map_size);
+    /* The map's maximum (every frame's early exit needs it) is scanned anew each call, so frame
+     * setup splits the scan between the pool's threads: read by one thread, the whole map is a
+     * sizeable share of a course frame. */
+    rc->map_scan = retro_pthreads_map_scan;
     if (retro_frame_setup(rc, RETRO_MODE_COURSE, p, c) == RETRO_OK)
         retro_kernel_pthreads(&rc->frame, rc);
 }

@@ -47,6 +47,7 @@ struct retro_ctx {
 
     /* Caches, each per map: call retro_ctx_map_changed() after editing a map in place. */
     retro_hmax_cache hmax;     /* the height map's maximum (hmax_cache.c) */
+    retro_map_scan map_scan;   /* how frame setup fills hmax when stale (NULL: retro_map_max) */
     retro_packed_map packed;   /* the SIMD kernels' packed map (simd_map.c) */
     retro_fx_bake bake;        /* morph, shade and water baked into maps (effects_bake.c) */
     /* occlusion skipping's maximum pyramids (hmax_pyramid.c), allocated on first use: of period

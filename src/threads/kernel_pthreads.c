@@ -89,33 +89,26 @@ static void pt_max_task(void *arg, int t)
     job->max[t].value = retro_map_max(job->map + lo, hi - lo);
 }
 
-void retro_pthreads_map_max(retro_ctx *rc, const uint8_t *map, int S)
+uint8_t retro_pthreads_map_scan(void *ctx, const uint8_t *map, size_t n)
 {
-    retro_pt_pool *pool = pt_pool_of(rc);
-    const size_t n = (size_t)S * (size_t)S;
-    uint8_t m;
-    if (!pool || retro_pt_pool_threads(pool) == 1) {
-        m = retro_map_max(map, n);
-    } else {
-        pt_max_job job = {.map = map, .n = n, .T = retro_pt_pool_threads(pool)};
-        retro_pt_pool_run(pool, pt_max_task, &job);
-        m = 0;
-        for (int t = 0; t < job.T; t++)
-            m = job.max[t].value > m ? job.max[t].value : m;
-    }
-    rc->hmax.map = map;
-    rc->hmax.size = S;
-    rc->hmax.value = m;
+    retro_pt_pool *pool = pt_pool_of(ctx);
+    if (!pool || retro_pt_pool_threads(pool) == 1)
+        return retro_map_max(map, n);
+    pt_max_job job = {.map = map, .n = n, .T = retro_pt_pool_threads(pool)};
+    retro_pt_pool_run(pool, pt_max_task, &job);
+    uint8_t m = 0;
+    for (int t = 0; t < job.T; t++)
+        m = job.max[t].value > m ? job.max[t].value : m;
+    return m;
 }
 
 void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
 {
     const retro_frame *f = frame;
-    int T;
-    pt_pool_of(rc);
+    retro_pt_pool *pool = pt_pool_of(rc);
     /* Each thread's two accumulator arrays start on their own 64-byte line. */
     size_t stride = ((size_t)f->D + 15) / 16 * 16;
-    T = rc->pt_pool ? retro_pt_pool_threads(rc->pt_pool) : 1;
+    const int T = pool ? retro_pt_pool_threads(pool) : 1;
     size_t need = 2 * stride * (size_t)T + 16;
     if (need > rc->tscratch_cap) {
         float *p = realloc(rc->tscratch, need * sizeof(float));
@@ -124,12 +117,12 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
             rc->tscratch_cap = need;
         }
     }
-    if (!rc->pt_pool || need > rc->tscratch_cap) { /* out of memory: one thread, the context's own */
+    if (!pool || need > rc->tscratch_cap) { /* out of memory: one thread, the context's own */
         retro_course_start(f, rc->qx, rc->qy);
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
     pt_job job = {.f = f, .chunks = (f->W + PT_CHUNK - 1) / PT_CHUNK, .scratch = rc->tscratch, .stride = stride};
     atomic_init(&job.next, 0);
-    retro_pt_pool_run(rc->pt_pool, pt_task, &job);
+    retro_pt_pool_run(pool, pt_task, &job);
 }

@@ -257,7 +257,7 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
         hm = rc->bake.height;
         cm = rc->bake.color;
     }
-    int hmax = retro_hmax_get(&rc->hmax, hm, S);
+    int hmax = retro_hmax_get_by(&rc->hmax, hm, S, rc->map_scan, rc);
 
     retro_frame *f = &rc->frame;
     memset(f, 0, sizeof *f);

@@ -40,17 +40,24 @@ uint8_t retro_map_max(const uint8_t *map, size_t n)
     return m;
 }
 
-int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S)
+int retro_hmax_get_by(retro_hmax_cache *hc, const uint8_t *map, int S, retro_map_scan scan, void *arg)
 {
     if (hc->map != map || hc->size != S) {
-        hc->value = retro_map_max(map, (size_t)S * (size_t)S);
+        const size_t n = (size_t)S * (size_t)S;
+        hc->value = scan ? scan(arg, map, n) : retro_map_max(map, n);
         hc->map = map;
         hc->size = S;
     }
     return hc->value;
 }
 
+int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S)
+{
+    return retro_hmax_get_by(hc, map, S, NULL, NULL);
+}
+
 void retro_hmax_stale(retro_hmax_cache *hc)
 {
     hc->map = NULL;
 }
+

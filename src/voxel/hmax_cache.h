@@ -15,7 +15,12 @@ typedef struct retro_hmax_cache {
 
 /* The largest of the n bytes at map (0 when n is 0). */
 uint8_t retro_map_max(const uint8_t *map, size_t n);
-/* The maximum of map (S*S cells), scanned only when map or S differ from the last call. */
+/* A scan of the n bytes at map returning their largest, with the caller's arg. */
+typedef uint8_t (*retro_map_scan)(void *arg, const uint8_t *map, size_t n);
+/* The maximum of map (S*S cells), scanned only when map or S differ from the last call: by
+ * scan(arg, ..) when scan is given (the pthreads pool's split scan), else by retro_map_max. */
+int retro_hmax_get_by(retro_hmax_cache *hc, const uint8_t *map, int S, retro_map_scan scan, void *arg);
+/* retro_hmax_get_by with retro_map_max. */
 int retro_hmax_get(retro_hmax_cache *hc, const uint8_t *map, int S);
 /* The next call scans again (the map was edited in place). */
 void retro_hmax_stale(retro_hmax_cache *hc);

@@ -29,9 +29,10 @@ void retro_kernel_simd_avx2(const void *frame, retro_ctx *rc);
 void retro_kernel_simd_avx512(const void *frame, retro_ctx *rc);
 void retro_kernel_omp(const void *frame, retro_ctx *rc);
 void retro_kernel_pthreads(const void *frame, retro_ctx *rc);
-/* Fills rc's map-maximum cache (retro_hmax_get) for map (S x S), scanned by the pthreads
- * kernel's threads in parallel: for callers that cannot keep the cache between frames. */
-void retro_pthreads_map_max(retro_ctx *rc, const uint8_t *map, int S);
+/* The largest of the n bytes at map, scanned by the pthreads kernel's threads of context ctx
+ * in slices (a retro_map_scan, hmax_cache.h): for callers that cannot keep the map's maximum
+ * between frames (retro_ctx.map_scan). */
+uint8_t retro_pthreads_map_scan(void *ctx, const uint8_t *map, size_t n);
 
 
 /* The voxel family's mode names, indexed by retro_mode (src/voxel/frame.c). */

@@ -140,19 +140,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++)
         SIMD_NAME(course_span)(f, cols[c], u + c, y[c], f->H, f->sky);
-    for (int e = 1; e < D; e += SIMD_LANES) {
-        const int n = D - e;
-        const simd_mask m = v_first(n);
-        const simd_f32 sx = v_load_first_f(f->sx + e, n, m), sy = v_load_first_f(f->sy + e, n, m);
-        simd_f32 x = v_load_first_f(qx + e, n, m), z = v_load_first_f(qy + e, n, m);
-        RETRO_CHAINS_UNROLLED
-        for (int c = 0; c < N; c++) {
-            x = v_add_f(x, sx);
-            z = v_add_f(z, sy);
-        }
-        v_store_first_f(qx + e, n, m, x);
-        v_store_first_f(qy + e, n, m, z);
-    }
+    retro_course_advance(f, qx, qy, u, u + N);
 }
 
 /* Columns u..u+n-1 (n <= RETRO_SIMD_COURSE_GROUP) of mode course. Painted straight into out, a
