@@ -25,7 +25,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_span)(const retro_frame *f, uint32_t *co
  * column span, when v_l exceeds e = max(y, v_<l), an exclusive prefix max in log2(LANES)
  * shifted maxes. Returns the new y-buffer. */
 RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col, int u, int y, simd_i32 v,
-                                             simd_i32 at, const int packed)
+                                             simd_i32 at)
 {
     const simd_i32 fill = v_set1_i(y);
     simd_i32 p = v_max_i(v, fill);
@@ -48,7 +48,7 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
         v_store_i((int *)as, at);
         for (; up; up &= up - 1) {
             int l = __builtin_ctz(up);
-            SIMD_NAME(course_span)(f, col, u, es[l], vs[l], SIMD_NAME(colour_of)(f, as[l], packed));
+            SIMD_NAME(course_span)(f, col, u, es[l], vs[l], f->color_map[as[l]]);
         }
     }
     return v_last_i(p);
@@ -58,7 +58,7 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
  * positions qx, qy hold, and in *at what the scan needs for colours. */
 RETRO_SIMD_INLINE simd_i32
 SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
-                         const float *qx, const float *qy, int d, simd_i32 *at, const int packed, const int steps)
+                         const float *qx, const float *qy, int d, simd_i32 *at, const int steps)
 {
     const int n = f->D - d;
     const simd_mask live = v_first(n);
@@ -71,8 +71,8 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
     /* Dead lanes sample cell 0 (their q is 0). */
     const simd_i32 i = SIMD_NAME(course_wrap)(x, k), j = SIMD_NAME(course_wrap)(z, k);
     simd_i32 h;
-    if (packed || f->S < 2) {
-        h = SIMD_NAME(heights)(f, sf, k, i, j, at, packed);
+    if (f->S < 2) {
+        h = SIMD_NAME(heights)(f, sf, k, i, j, at, 0);
     } else {
         /* A cell of the course's torus has i, j <= S - 2, so its row-major index is at most
          * S*S - S - 2 and the bytes after it up to index + 3 <= S*S - S + 1 < S*S lie in the
@@ -88,6 +88,28 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
  * the arrays in memory); the count is at least RETRO_SIMD_COURSE_CHAINS. */
 #define RETRO_CHAINS_UNROLLED _Pragma("GCC unroll 4")
 
+/* retro_course_advance(f, qx, qy, u, u + N) at this file's vector width: every accumulator
+ * gets its N additions in column order, so the values are the same. The strip advances after
+ * every group of columns, and A/B benchmark runs found the baseline-ISA advance (4 floats per
+ * vector, out of line) measurably slower here; the threads' replays of whole ranges of
+ * columns stay with retro_course_advance. */
+RETRO_SIMD_INLINE void SIMD_NAME(course_advance)(const retro_frame *f, float *qx, float *qy, const int N)
+{
+    for (int e = 1; e < f->D; e += SIMD_LANES) {
+        const int n = f->D - e;
+        const simd_mask m = v_first(n);
+        const simd_f32 sx = v_load_first_f(f->sx + e, n, m), sy = v_load_first_f(f->sy + e, n, m);
+        simd_f32 x = v_load_first_f(qx + e, n, m), z = v_load_first_f(qy + e, n, m);
+        RETRO_CHAINS_UNROLLED
+        for (int c = 0; c < N; c++) {
+            x = v_add_f(x, sx);
+            z = v_add_f(z, sy);
+        }
+        v_store_first_f(qx + e, n, m, x);
+        v_store_first_f(qy + e, n, m, z);
+    }
+}
+
 /* Columns u..u+N-1 (N <= RETRO_SIMD_COURSE_CHAINS) of mode course: docs/KERNELS.md's lanes =
  * distances. qx, qy hold column u's positions on entry and column u+N's on return. Column u+c
  * samples column u's accumulators plus c steps, the very additions of SEMANTICS.md in their
@@ -101,7 +123,7 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
  * tile (course_group), or into out when cols[c] is NULL. */
 RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_simd_frame *sf,
                                               const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *const *cols,
-                                              int u, const int packed, const int N)
+                                              int u, const int N)
 {
     const int D = f->D;
     int y[RETRO_SIMD_COURSE_CHAINS] = {0}, d = 1;
@@ -109,10 +131,10 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
     simd_i32 at1[RETRO_SIMD_COURSE_CHAINS], v1[RETRO_SIMD_COURSE_CHAINS];
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++) {
-        v0[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d, &at0[c], packed, c);
+        v0[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d, &at0[c], c);
         at1[c] = v1[c] = v_zero_i();
         if (d + SIMD_LANES < D)
-            v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + SIMD_LANES, &at1[c], packed, c);
+            v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + SIMD_LANES, &at1[c], c);
     }
     for (; d < D; d += SIMD_LANES) {
         const int cap = f->vcap[d], more = d + 2 * SIMD_LANES < D;
@@ -127,7 +149,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
                 at0[c] = at1[c];
                 v0[c] = v1[c];
                 if (more)
-                    v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + 2 * SIMD_LANES, &at1[c], packed, c);
+                    v1[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d + 2 * SIMD_LANES, &at1[c], c);
             }
         }
         if (!live)
@@ -135,12 +157,12 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         RETRO_CHAINS_UNROLLED
         for (int c = 0; c < N; c++)
             if (live >> c & 1)
-                y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c], packed);
+                y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c]);
     }
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++)
         SIMD_NAME(course_span)(f, cols[c], u + c, y[c], f->H, f->sky);
-    retro_course_advance(f, qx, qy, u, u + N);
+    SIMD_NAME(course_advance)(f, qx, qy, N);
 }
 
 /* Columns u..u+n-1 (n <= RETRO_SIMD_COURSE_GROUP) of mode course. Painted straight into out, a
@@ -151,16 +173,16 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
  * (NULL: paint into out). */
 RETRO_SIMD_INLINE void SIMD_NAME(course_group)(const retro_frame *f, const retro_simd_frame *sf,
                                                const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *tile,
-                                               size_t th, int u, int n, const int packed)
+                                               size_t th, int u, int n)
 {
     uint32_t *cols[RETRO_SIMD_COURSE_GROUP];
     for (int c = 0; c < n; c++)
         cols[c] = tile ? tile + (size_t)c * th : NULL;
     int c = 0;
     for (; c + RETRO_SIMD_COURSE_CHAINS <= n; c += RETRO_SIMD_COURSE_CHAINS)
-        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, packed, RETRO_SIMD_COURSE_CHAINS);
+        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, RETRO_SIMD_COURSE_CHAINS);
     for (; c < n; c++)
-        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, packed, 1);
+        SIMD_NAME(course_cols)(f, sf, k, qx, qy, cols + c, u + c, 1);
     if (!tile)
         return;
     uint32_t *out = f->out;

@@ -116,9 +116,19 @@ static int pack_current(const retro_frame *f, retro_packed_map *pm)
     return pm->ok;
 }
 
+/* Mode course reads the maps directly: there a vector's lanes are one column's consecutive
+ * distances, and the direct read costs one height read per lane (one padded gather in the
+ * AVX-512 column) and a colour read per painting lane only, where the packed map costs the
+ * tile arithmetic on every lane. A/B benchmark runs decided it (docs/KERNELS.md, "Map
+ * reads"). */
+static int packs(const retro_frame *f)
+{
+    return f->mode != RETRO_MODE_COURSE;
+}
+
 void retro_simd_use_packed(const retro_frame *f, retro_ctx *rc, retro_simd_frame *sf)
 {
-    sf->cells = pack_current(f, &rc->packed) ? rc->packed.cells : NULL;
+    sf->cells = packs(f) && pack_current(f, &rc->packed) ? rc->packed.cells : NULL;
     sf->quads = quads_of(sf->cells, f->S);
 }
 
@@ -131,7 +141,7 @@ void retro_simd_offer_packed(retro_ctx *rc)
     rc->packed.offered = 0;
     if (!retro_simd_check(f, &sf))
         return;
-    rc->packed.offered = pack_current(f, &rc->packed);
+    rc->packed.offered = packs(f) && pack_current(f, &rc->packed);
 }
 
 void retro_packed_map_stale(retro_packed_map *pm)

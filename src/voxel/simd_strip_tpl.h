@@ -121,24 +121,19 @@ static const SIMD_NAME(exact_fn) SIMD_NAME(exact_strips)[2][2][2][2][2] = {
 #undef SIMD_STRIP
 #undef SIMD_STRIP_NAME
 
-/* Mode course's strips, one per map read (packed or not). The tile of course_group lives on the
- * strip's stack (no allocation per frame, nothing shared between threads); frames taller than
- * RETRO_SIMD_COURSE_ROWS paint straight into out. */
-#define SIMD_COURSE_STRIP(name, packed)                                                                  \
-    static void SIMD_NAME(name)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, \
-                                float *qx, float *qy, int u0, int u1)                                    \
-    {                                                                                                    \
-        uint32_t tile[RETRO_SIMD_COURSE_GROUP * (RETRO_SIMD_COURSE_ROWS + SIMD_LANES)];                   \
-        const size_t th = (size_t)f->H + SIMD_LANES;                                                     \
-        uint32_t *t = f->H <= RETRO_SIMD_COURSE_ROWS ? tile : NULL;                                      \
-        for (int u = u0; u < u1; u += RETRO_SIMD_COURSE_GROUP)                                           \
-            SIMD_NAME(course_group)(f, sf, k, qx, qy, t, th, u,                                          \
-                                    u1 - u < RETRO_SIMD_COURSE_GROUP ? u1 - u : RETRO_SIMD_COURSE_GROUP, \
-                                    packed);                                                             \
-    }
-SIMD_COURSE_STRIP(course_maps, 0)
-SIMD_COURSE_STRIP(course_packed, 1)
-#undef SIMD_COURSE_STRIP
+/* Mode course's strip: it reads the maps directly (retro_simd_use_packed). The tile of
+ * course_group lives on the strip's stack (no allocation per frame, nothing shared between
+ * threads); frames taller than RETRO_SIMD_COURSE_ROWS paint straight into out. */
+static void SIMD_NAME(course_strip)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k,
+                                    float *qx, float *qy, int u0, int u1)
+{
+    uint32_t tile[RETRO_SIMD_COURSE_GROUP * (RETRO_SIMD_COURSE_ROWS + SIMD_LANES)];
+    const size_t th = (size_t)f->H + SIMD_LANES;
+    uint32_t *t = f->H <= RETRO_SIMD_COURSE_ROWS ? tile : NULL;
+    for (int u = u0; u < u1; u += RETRO_SIMD_COURSE_GROUP)
+        SIMD_NAME(course_group)(f, sf, k, qx, qy, t, th, u,
+                                u1 - u < RETRO_SIMD_COURSE_GROUP ? u1 - u : RETRO_SIMD_COURSE_GROUP);
+}
 
 /* Columns [u0, u1) of a frame retro_simd_check() accepted. */
 static void SIMD_NAME(render_strip)(const retro_frame *f, const retro_simd_frame *sf, float *qx, float *qy, int u0,
@@ -147,7 +142,7 @@ static void SIMD_NAME(render_strip)(const retro_frame *f, const retro_simd_frame
     SIMD_NAME(consts) k;
     SIMD_NAME(init_consts)(&k, f, sf);
     if (f->mode == RETRO_MODE_COURSE) {
-        (sf->cells ? SIMD_NAME(course_packed) : SIMD_NAME(course_maps))(f, sf, &k, qx, qy, u0, u1);
+        SIMD_NAME(course_strip)(f, sf, &k, qx, qy, u0, u1);
         return;
     }
     const int lod = f->mode == RETRO_MODE_LOD, fog = (f->fx & RETRO_FX_FOG) != 0;
