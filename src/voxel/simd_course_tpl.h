@@ -188,7 +188,14 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_group)(const retro_frame *f, const retro
     uint32_t *out = f->out;
     const ptrdiff_t W = f->W;
     ptrdiff_t i = (ptrdiff_t)(f->H - 1) * W + u;
-    for (int r = 0; r < f->H; r++, i -= W)
+    int r = 0;
+#ifdef SIMD_TILE_BLOCK /* the ISA's block transpose (LANES x LANES pixels), for whole groups */
+    if (n == RETRO_SIMD_COURSE_GROUP)
+        for (; r + SIMD_LANES <= f->H; r += SIMD_LANES, i -= SIMD_LANES * W)
+            for (c = 0; c < n; c += SIMD_LANES)
+                SIMD_NAME(tile_block)(out, i + c, W, tile + (size_t)c * th + (size_t)r, th);
+#endif
+    for (; r < f->H; r++, i -= W)
         for (c = 0; c < n; c++)
             RETRO_PUT(out, (size_t)(i + c), tile[(size_t)c * th + (size_t)r]);
 }

@@ -47,6 +47,11 @@
  *   v_min_where(m, a) v_max_where(m, a)   the least / greatest lane of a in m (m not empty;
  *                                  v_max_where may assume a >= 0)
  *   v_set1_16(x) v_mullo_16 v_add_16 (a, b) v_srli_16(a, n)   16-bit lane operations (fog)
+ * and optionally
+ *   SIMD_TILE_BLOCK 1 with SIMD_NAME(tile_block)(out, at, W, tile, th): mode course's tile
+ *                   columns (LANES of them, th entries apart) rows r..r+LANES-1 into out, row
+ *                   r + k at out + at - k*W, by a transpose in registers; without it the tile
+ *                   is copied pixel by pixel
  * Every float operation of SEMANTICS.md is one of these, in the order written here, so each
  * lane evaluates exactly naive's arithmetic (no FMA: -ffp-contract=off). At its end this file
  * #undefs all of the above, leaving the next ISA file a clean slate. */
@@ -177,6 +182,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef SIMD_ISA
 #undef SIMD_LANES
 #undef SIMD_ROW_STORES
+#undef SIMD_TILE_BLOCK
 #undef simd_f32
 #undef simd_i32
 #undef simd_mask

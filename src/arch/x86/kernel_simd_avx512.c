@@ -100,6 +100,45 @@ RETRO_SIMD_INLINE __m512 SIMD_NAME(sub_f64)(__m512 a, double h)
     return _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1);
 }
 
+/* Mode course's tile (simd_course_tpl.h, course_group) into out 16 rows of 16 columns at a
+ * time: the columns' rows r..r+15 load as 16 vectors, a 16x16 transpose of 32-bit words (4 rounds of
+ * 16 shuffles) turns them into 16 rows of 16 adjacent pixels, and each row is one store, where
+ * copying pixel by pixel costs a load and a store each. Row r of the tile goes to out + at,
+ * row r + k to out + at - k*W. */
+#define SIMD_TILE_BLOCK 1
+RETRO_SIMD_INLINE void SIMD_NAME(tile_block)(uint32_t *out, ptrdiff_t at, ptrdiff_t W, const uint32_t *tile,
+                                             size_t th)
+{
+    __m512i a[16], t[16];
+    for (int c = 0; c < 16; c++)
+        a[c] = _mm512_loadu_si512(tile + (size_t)c * th);
+    /* word pairs, then quads: in 128-bit lane L, t[4k + m] holds row 4L + m of columns 4k..4k+3 */
+    for (int k = 0; k < 8; k++) {
+        t[2 * k] = _mm512_unpacklo_epi32(a[2 * k], a[2 * k + 1]);
+        t[2 * k + 1] = _mm512_unpackhi_epi32(a[2 * k], a[2 * k + 1]);
+    }
+    for (int k = 0; k < 4; k++) {
+        a[4 * k] = _mm512_unpacklo_epi64(t[4 * k], t[4 * k + 2]);
+        a[4 * k + 1] = _mm512_unpackhi_epi64(t[4 * k], t[4 * k + 2]);
+        a[4 * k + 2] = _mm512_unpacklo_epi64(t[4 * k + 1], t[4 * k + 3]);
+        a[4 * k + 3] = _mm512_unpackhi_epi64(t[4 * k + 1], t[4 * k + 3]);
+    }
+    /* a 4x4 transpose of 128-bit lanes for each m: row 4L + m = lane L of a[m], a[4 + m], .. */
+    for (int m = 0; m < 4; m++) {
+        const __m512i v0 = _mm512_shuffle_i32x4(a[m], a[4 + m], 0x44), v1 = _mm512_shuffle_i32x4(a[m], a[4 + m], 0xee);
+        const __m512i v2 = _mm512_shuffle_i32x4(a[8 + m], a[12 + m], 0x44);
+        const __m512i v3 = _mm512_shuffle_i32x4(a[8 + m], a[12 + m], 0xee);
+        t[m] = _mm512_shuffle_i32x4(v0, v2, 0x88);
+        t[4 + m] = _mm512_shuffle_i32x4(v0, v2, 0xdd);
+        t[8 + m] = _mm512_shuffle_i32x4(v1, v3, 0x88);
+        t[12 + m] = _mm512_shuffle_i32x4(v1, v3, 0xdd);
+    }
+    for (int r = 0; r < 16; r++) {
+        _mm512_storeu_si512(out + at - (ptrdiff_t)r * W, t[r]);
+        RETRO_SIMD_COUNT(out, (size_t)(at - (ptrdiff_t)r * W), 0xffffu);
+    }
+}
+
 #include "simd_strip_tpl.h"
 
 #undef AVX512_FLOOR
