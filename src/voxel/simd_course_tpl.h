@@ -48,7 +48,7 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
         v_store_i((int *)as, at);
         for (; up; up &= up - 1) {
             int l = __builtin_ctz(up);
-            SIMD_NAME(course_span)(f, col, u, es[l], vs[l], f->color_map[as[l]]);
+            SIMD_NAME(course_span)(f, col, u, es[l], vs[l], SIMD_NAME(colour_of)(f, as[l], 0));
         }
     }
     return v_last_i(p);
