@@ -219,6 +219,8 @@ int main(int argc, char **argv)
             b->Iterations(MESH_ITERATIONS)->Repetitions(quick ? MESH_QUICK_REPETITIONS : MESH_REPETITIONS);
         else if (c->repetitions)
             b->Repetitions(c->repetitions);
+        if (c->min_time > 0 && !quick)
+            b->MinTime(c->min_time);
     }
 
     context_publish(ctx);

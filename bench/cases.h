@@ -42,6 +42,7 @@ struct BenchCase {
     const retro_effects *fx = nullptr;
     std::string label;           // the row's name in its extra table
     int repetitions = 0;         // its own repetition count; 0: the run's --benchmark_repetitions
+    double min_time = 0;         // its own least seconds per repetition (not with --quick); 0: the run's
 
     // Filled by the reporter once the case has run.
     bool ran = false;
