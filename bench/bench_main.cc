@@ -81,6 +81,26 @@ static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
     return static_cast<double>(n->evaluated);
 }
 
+// The share of W x (D-1) the counting ybuffer evaluates with the ideal bound (hmax_pyramid.h,
+// retro_skip_ideal; blocks down to the pyramid's finest): how far any max bound could take
+// skipping on this frame, beside what the kernel evaluates. omp's skipping cases only.
+static double ideal_share(const BenchCase *c, const player_t *p, ctx_t *frame)
+{
+    if (c->direct || c->mode != RETRO_MODE_EXACT || c->no_skip || std::strcmp(c->kernel->name, "omp"))
+        return std::nan("");
+    retro_kernel k = *retro_kernel_find("ybuffer");
+    k.fn = retro_kernel_ybuffer_counted;
+    std::memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
+    retro_skip_ideal = RETRO_PYR_LMIN;
+    player_t q = *p;
+    retro_err e = retro_render(live.rc, &k, &live.opts, &q, frame);
+    retro_skip_ideal = -1;
+    if (e)
+        return std::nan("");
+    return 100.0 * static_cast<double>(retro_ybuffer_counts.evaluated) /
+           (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
+}
+
 static void run_case(benchmark::State &st, const BenchCase *c)
 {
     if (!retro_kernel_runs_here(c->kernel)) {
@@ -131,6 +151,9 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         st.counters["evaluated/frame"] = evaluated;
         st.counters["evaluated%"] = 100.0 * evaluated / (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
     }
+    double ideal = ideal_share(c, &p, &frame);
+    if (!std::isnan(ideal))
+        st.counters["ideal%"] = ideal;
     // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
     // same clock (CPU or real) as the case's own time.
     const auto ms_flags = Counter::kIsIterationInvariantRate | Counter::kInvert;

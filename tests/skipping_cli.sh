@@ -21,6 +21,13 @@ num() { sed -n "s/^$1: \([0-9]*\).*/\1/p" "$2"; }
 [ "$(num painting "$tmp/on.txt")" = "$(num painting "$tmp/off.txt")" ] || fail "painting counts differ"
 on=$(num evaluated "$tmp/on.txt"); off=$(num evaluated "$tmp/off.txt")
 [ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "evaluated: $on with skipping, $off without"
+# the ideal bound's line (docs/SKIPPING.md, "How far a max bound can go"): with skipping only,
+# and evaluating no more than the frame's samples
+grep -q '^ideal max bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.]*% with blocks down to 2 cells$' \
+    "$tmp/on.txt" || fail "--stats: no ideal bound line"
+! grep -q '^ideal' "$tmp/off.txt" || fail "--no-skip --stats printed an ideal bound"
+ideal=$(sed -n 's/^ideal max bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
+awk -v a="$ideal" 'BEGIN { exit !(a > 0 && a <= 100) }' || fail "ideal share '$ideal'"
 # no stats and no output file when the input is bad
 "$retro" render $map --stats -d 12x -o "$tmp/bad.ppm" >"$tmp/bad.txt" 2>/dev/null
 [ $? -eq 2 ] && [ ! -e "$tmp/bad.ppm" ] && [ ! -s "$tmp/bad.txt" ] || fail "bad input with --stats"

@@ -123,6 +123,61 @@ Test(skipping, counts_agree_valley)
     retro_map_free(&valley);
 }
 
+/* The ideal bound (hmax_pyramid.h, retro_skip_ideal) on one frame: still exact (the frame and
+ * the painting samples are those without skipping) at blocks down to 4, 2 and 1 cells, and at
+ * 1 cell, where each run is one sample bounded by its own height, it evaluates exactly the
+ * samples that paint: the probe's row test is then the sample's own. */
+static void ideal_case(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D)
+{
+    retro_ctx *rc = retro_ctx_new(), *off = retro_ctx_new();
+    cr_assert(rc && off);
+    size_t n = (size_t)W * (size_t)H;
+    uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+    cr_assert(a && b);
+    retro_sample_counts t = count(off, mode, 1, m, p, W, H, D, b);
+    for (int l = RETRO_PYR_LMIN; l >= 0; l--) {
+        retro_skip_ideal = l;
+        retro_sample_counts s = count(rc, mode, 0, m, p, W, H, D, a);
+        retro_skip_ideal = -1;
+        cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the ideal bound's frame (blocks down to %d) differs", what,
+                     1 << l);
+        cr_assert_eq(s.painting, t.painting, "%s, blocks down to %d: %llu samples paint, %llu without skipping", what,
+                     1 << l, (unsigned long long)s.painting, (unsigned long long)t.painting);
+        cr_assert_leq(s.evaluated, t.evaluated, "%s, blocks down to %d", what, 1 << l);
+        if (l == 0)
+            cr_assert_eq(s.evaluated, s.painting, "%s: at single cells %llu samples evaluated, %llu paint", what,
+                         (unsigned long long)s.evaluated, (unsigned long long)s.painting);
+    }
+    free(a);
+    free(b);
+    retro_ctx_free(rc);
+    retro_ctx_free(off);
+}
+
+Test(skipping, ideal_bound)
+{
+    retro_map m;
+    make_map(&m, 256);
+    for (int j = 0; j < 256; j++)
+        for (int i = 140; i < 144; i++)
+            m.height[(size_t)j * 256 + (size_t)i] = 107;
+    m.height[(size_t)128 * 256 + 20] = 255;
+    ideal_case(RETRO_MODE_EXACT, "ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400);
+    ideal_case(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400);
+    retro_map_free(&m);
+    static const char *const styles[] = {"alpine", "islands", "canyon"};
+    for (size_t k = 0; k < 3; k++) {
+        char err[256];
+        cr_assert_eq(retro_mapgen(styles[k], 3, 256, &m, err, sizeof err), 0, "%s", err);
+        struct retro_view v;
+        retro_default_view(&m, &v);
+        ideal_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle, v.height), 160, 120, 300);
+        /* D beyond S: runs cross the wrap seam */
+        ideal_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle + 37, v.height), 96, 72, 700);
+        retro_map_free(&m);
+    }
+}
+
 /* Low noise terrain (seed) with three spikes placed by st: the probes' queries below. */
 static void spiky_map(retro_map *m, int S, uint64_t seed, uint64_t *st)
 {

@@ -47,7 +47,8 @@ static void help(void)
            "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
            "              image is the same, only slower\n"
            "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
-           "              paint, and their share of the frame's samples (W x (D-1)), and\n"
+           "              paint, and their share of the frame's samples (W x (D-1)), what an\n"
+           "              ideal max bound would evaluate (docs/SKIPPING.md), and\n"
            "              simd-avx512's where it runs; mesh: the triangles submitted, after\n"
            "              culling, after clipping, and the fragments\n"
            "  --columns CSV voxel: write per screen column the samples the ybuffer kernel\n"
@@ -141,6 +142,22 @@ static int print_stats(render_job *j, const player_t *p)
     printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
     printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
     printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
+    /* How far a max bound could go at all (docs/SKIPPING.md): the same walk with the ideal bound,
+     * with blocks down to 4 cells (the pyramid's finest) and down to 2. */
+    if (retro_skip_applies(f)) {
+        printf("ideal max bound evaluates:");
+        for (int l = RETRO_PYR_LMIN; l >= RETRO_PYR_LMIN - 1; l--) {
+            memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
+            retro_skip_ideal = l;
+            e = retro_render(j->rc, &counted, &j->opts, p, &j->c);
+            retro_skip_ideal = -1;
+            if (e)
+                return cli_error("render", "%s", retro_strerror(e));
+            printf("%s %.2f%% with blocks down to %d cells", l == RETRO_PYR_LMIN ? "" : ",",
+                   all > 0 ? 100.0 * (double)retro_ybuffer_counts.evaluated / all : 0.0, 1 << l);
+        }
+        printf("\n");
+    }
     /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
     const retro_kernel *vk = retro_kernel_find("simd-avx512");
     if (vk && retro_kernel_runs_here(vk) && !retro_render_check(vk, &j->opts, NULL, 0)) {

@@ -79,6 +79,15 @@ void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 extern retro_sample_counts retro_simd_counts;
 void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
 
+/* The counting ybuffer's ideal bound (docs/SKIPPING.md, "How far a max bound can go"), a study
+ * of the method's limit, not a kernel: when it is L >= 0, a run's bound is the largest height of
+ * the run's own box of cells instead of its block window (boxes wider than RETRO_IDEAL_BOX
+ * cells keep the window, which is no smaller), the probe descends to blocks of 2^L cells, and
+ * columns probe before every sample. -1 (the default): the kernel's own traversal. Still exact,
+ * so its frames equal naive's. Global like the counts: one thread at a time. */
+extern int retro_skip_ideal;
+enum { RETRO_IDEAL_BOX = 64 };
+
 /* Whether the ybuffer strip skips this frame: mode exact or lod with a pyramid (any
  * per-sample effects: fog changes colours only, bilinear is covered by the bound). */
 RETRO_HELPER int retro_skip_applies(const retro_frame *f)
@@ -111,6 +120,22 @@ RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
     int i = I % S;
     return i < 0 ? i + S : i;
 }
+
+#ifdef RETRO_COUNT_SAMPLES
+/* The largest height of the cells I..I+wi x J..J+wj of the torus of side S (the ideal bound). */
+RETRO_HELPER int retro_skip_box_max(const retro_pyramid *p, int S, int I, int J, int wi, int wj)
+{
+    int m = 0;
+    for (int b = 0; b <= wj; b++) {
+        const uint8_t *row = p->map + (size_t)retro_skip_wrap(J + b, S, 0) * (size_t)p->S;
+        for (int a = 0; a <= wi; a++) {
+            const int h = row[retro_skip_wrap(I + a, S, 0)];
+            m = h > m ? h : m;
+        }
+    }
+    return m;
+}
+#endif
 
 /* The first index n in [n, n_end) whose sample in this column may rise above y; n_end when
  * none may. The n-th sample is at distance dist[n] (mode lod), or n when dist is NULL (mode
@@ -164,7 +189,10 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
     const int64_t height = f->height;
     int L = c->level, at = 0, I0 = 0, J0 = 0; /* the cell at index at (0: none yet) */
 #ifdef RETRO_COUNT_SAMPLES
+    const int lmin = retro_skip_ideal >= 0 ? retro_skip_ideal : RETRO_PYR_LMIN;
     retro_ybuffer_counts.probes++;
+#else
+    const int lmin = RETRO_PYR_LMIN;
 #endif
     while (n < n_end) {
 #ifdef RETRO_COUNT_SAMPLES
@@ -190,7 +218,14 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
         const int wi = (I0 < I1 ? I1 - I0 : I0 - I1) + bilinear, wj = (J0 < J1 ? J1 - J0 : J0 - J1) + bilinear;
         if (wi <= B && wj <= B) {
             const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
+#ifdef RETRO_COUNT_SAMPLES
+            /* levels under RETRO_PYR_LMIN have no windows, and their boxes are at most 2 wide */
+            const int M = retro_skip_ideal >= 0 && wi <= RETRO_IDEAL_BOX && wj <= RETRO_IDEAL_BOX
+                              ? retro_skip_box_max(p, S, Imin, Jmin, wi, wj)
+                              : p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+#else
             const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+#endif
             float fdh;
             if (bilinear) /* the sample's own dh of a height above any its rounding reaches */
                 fdh = retro_bilinear_dh((float)(M + 1), height);
@@ -204,7 +239,7 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
                 continue;
             }
         }
-        if (L == RETRO_PYR_LMIN)
+        if (L <= lmin)
             break;
         L--;
     }

@@ -41,6 +41,8 @@
 #include "ybuffer_columns.h"
 retro_sample_counts retro_ybuffer_counts;
 retro_column_counts *retro_ybuffer_columns;
+int retro_skip_ideal = -1;
+#define IDEAL_ONE_BY_ONE (retro_skip_ideal >= 0)
 /* Every use has the sample's column in u. */
 #define COUNT_EVAL()                                                                               \
     (retro_ybuffer_counts.evaluated++, retro_ybuffer_columns ? (void)retro_ybuffer_columns[u].evaluated++ : (void)0)
@@ -49,6 +51,7 @@ retro_column_counts *retro_ybuffer_columns;
 #else
 #define COUNT_EVAL() ((void)0)
 #define COUNT_PAINT() ((void)0)
+#define IDEAL_ONE_BY_ONE 0
 #endif
 
 enum { CHUNK = 256 };
@@ -249,7 +252,7 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
                 batch = RETRO_SKIP_NEAR;
                 continue;
             }
-            const int cnt = n_end - n < batch ? n_end - n : batch;
+            const int cnt = IDEAL_ONE_BY_ONE ? 1 : n_end - n < batch ? n_end - n : batch;
             /* probes that keep failing (terrain that keeps rising) come less often */
             batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
             if (bilinear) { /* four cells and a colour blend per sample: one pass */
