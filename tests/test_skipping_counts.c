@@ -78,17 +78,23 @@ static void counts_compare(const char *what, const retro_map *m, player_t p, int
     counts_mode(RETRO_MODE_COURSE, course, m, p, W, H, D, 0);
 }
 
-/* A view where skipping must skip: a low ridge near the camera hides the plain behind it, and
- * a tall spike behind the camera keeps vcap at the top of the screen for most distances, so
- * the early exit cannot stop the columns: only skipping avoids evaluating the hidden plain. */
+/* A view where skipping must skip, from (128.5, 128.5) at height 100 looking along +x: a low
+ * ridge near the camera hides the plain behind it, and a tall spike behind the camera keeps
+ * vcap at the top of the screen for most distances, so the early exit cannot stop the columns:
+ * only skipping avoids evaluating the hidden plain. */
+static void ridge_map(retro_map *m)
+{
+    make_map(m, 256);
+    for (int j = 0; j < 256; j++)
+        for (int i = 140; i < 144; i++)
+            m->height[(size_t)j * 256 + (size_t)i] = 107;
+    m->height[(size_t)128 * 256 + 20] = 255;
+}
+
 Test(skipping, skipping_skips)
 {
     retro_map m;
-    make_map(&m, 256);
-    for (int j = 0; j < 256; j++)
-        for (int i = 140; i < 144; i++)
-            m.height[(size_t)j * 256 + (size_t)i] = 107;
-    m.height[(size_t)128 * 256 + 20] = 255;
+    ridge_map(&m);
     counts_compare("ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     /* mode lod samples fewer distances behind the ridge, still most of them hidden */
     counts_mode(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
@@ -157,11 +163,7 @@ static void ideal_case(retro_mode mode, const char *what, const retro_map *m, pl
 Test(skipping, ideal_bound)
 {
     retro_map m;
-    make_map(&m, 256);
-    for (int j = 0; j < 256; j++)
-        for (int i = 140; i < 144; i++)
-            m.height[(size_t)j * 256 + (size_t)i] = 107;
-    m.height[(size_t)128 * 256 + 20] = 255;
+    ridge_map(&m);
     ideal_case(RETRO_MODE_EXACT, "ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400);
     ideal_case(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400);
     retro_map_free(&m);
