@@ -50,6 +50,24 @@ static void bind_for(int threads)
     bound_cores = threads;
 }
 
+// Samples a counting kernel evaluates in one frame of the case (its counters zeroed first);
+// NaN when the frame fails.
+static double counted_frame(const retro_kernel *k, retro_sample_counts *n, const player_t *p,
+                            ctx_t *frame)
+{
+    std::memset(n, 0, sizeof *n);
+    player_t q = *p;
+    if (retro_render(live.rc, k, &live.opts, &q, frame))
+        return std::nan("");
+    return static_cast<double>(n->evaluated);
+}
+
+// A sample count as a share (%) of the reference's W x (D-1) samples.
+static double share_of(const BenchCase *c, double count)
+{
+    return 100.0 * count / (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
+}
+
 // Samples the counting build of the case's vector path evaluates in one frame (untimed,
 // after the timed ones; hmax_pyramid.h): simd-avx512's for the kernels that run its strips
 // (the simd kernels and the threaded ones, per group of 16 columns), ybuffer's for ybuffer;
@@ -74,31 +92,22 @@ static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
         n = &retro_simd_counts;
     } else
         return std::nan("");
-    std::memset(n, 0, sizeof *n);
-    player_t q = *p;
-    if (retro_render(live.rc, &k, &live.opts, &q, frame))
-        return std::nan("");
-    return static_cast<double>(n->evaluated);
+    return counted_frame(&k, n, p, frame);
 }
 
-// The share of W x (D-1) the counting ybuffer evaluates with the ideal bound (hmax_pyramid.h,
+// Samples the counting ybuffer evaluates with the ideal bound (hmax_pyramid.h,
 // retro_skip_ideal; blocks down to the pyramid's finest): how far any max bound could take
 // skipping on this frame, beside what the kernel evaluates. omp's skipping cases only.
-static double ideal_share(const BenchCase *c, const player_t *p, ctx_t *frame)
+static double ideal_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
 {
     if (c->direct || c->mode != RETRO_MODE_EXACT || c->no_skip || std::strcmp(c->kernel->name, "omp"))
         return std::nan("");
     retro_kernel k = *retro_kernel_find("ybuffer");
     k.fn = retro_kernel_ybuffer_counted;
-    std::memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
     retro_skip_ideal = RETRO_PYR_LMIN;
-    player_t q = *p;
-    retro_err e = retro_render(live.rc, &k, &live.opts, &q, frame);
+    double n = counted_frame(&k, &retro_ybuffer_counts, p, frame);
     retro_skip_ideal = -1;
-    if (e)
-        return std::nan("");
-    return 100.0 * static_cast<double>(retro_ybuffer_counts.evaluated) /
-           (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
+    return n;
 }
 
 static void run_case(benchmark::State &st, const BenchCase *c)
@@ -149,11 +158,11 @@ static void run_case(benchmark::State &st, const BenchCase *c)
     if (!std::isnan(evaluated)) {
         const_cast<BenchCase *>(c)->samples = evaluated;
         st.counters["evaluated/frame"] = evaluated;
-        st.counters["evaluated%"] = 100.0 * evaluated / (c->W * static_cast<double>(c->D > 1 ? c->D - 1 : 1));
+        st.counters["evaluated%"] = share_of(c, evaluated);
     }
-    double ideal = ideal_share(c, &p, &frame);
+    double ideal = ideal_samples(c, &p, &frame);
     if (!std::isnan(ideal))
-        st.counters["ideal%"] = ideal;
+        st.counters["ideal%"] = share_of(c, ideal);
     // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
     // same clock (CPU or real) as the case's own time.
     const auto ms_flags = Counter::kIsIterationInvariantRate | Counter::kInvert;
