@@ -210,3 +210,38 @@ Test(skipping, random_poses_on_generated_maps)
     }
     rig_close(g);
 }
+
+/* Bilinear's height difference (simd_sample_tpl.h, bilinear_dh): one float subtraction where
+ * the camera height is within 2^24 and no filtered height lies in (0, 2^-5), double otherwise.
+ * A map of zeros with isolated low cells gives filtered heights down to the product of two
+ * tiny weights (the double path) beside exact zeros and ordinary values (the float path);
+ * camera heights on both sides of 2^24 switch the float path off and on. */
+Test(skipping, bilinear_height_difference)
+{
+    trio *g = rig_open();
+    retro_map m;
+    make_map(&m, 64);
+    for (int j = 0; j < 64; j += 5)
+        for (int i = (j * 3) % 7; i < 64; i += 7)
+            m.height[(size_t)j * 64 + (size_t)i] = (uint8_t)(1 + (i + j) % 3 * 127);
+    new_map(g);
+    retro_effects fx;
+    memset(&fx, 0, sizeof fx);
+    fx.flags = RETRO_FX_BILINEAR;
+    static const int heights[] = {0, 1, 3, 200, (1 << 24) - 1, 1 << 24, (1 << 24) + 1, (1 << 24) + 3,
+                                  -(1 << 24), -(1 << 24) - 1, 1 << 30};
+    for (size_t z = 0; z < sizeof heights / sizeof heights[0]; z++)
+        for (int a = 0; a < NANGLES; a += 3) {
+            /* positions a hair off the cell centres: weights near 0 and 1 */
+            check(g, "bilinear dh", &m, at(20.5f + 0x1p-17f, 30.5f - 0x1p-18f, angles[a], heights[z]), 41, 29, 90, &fx);
+            check(g, "bilinear dh", &m, at(7.25f, 50.75f, angles[a], heights[z]), 41, 29, 90, &fx);
+        }
+    /* Camera heights near 2^24 only reach the screen from far away: a narrow, tall frame whose
+     * distant samples project between the rows. */
+    static const int far[] = {1 << 24, (1 << 24) + 1, -(1 << 24) - 1};
+    for (size_t z = 0; z < sizeof far / sizeof far[0]; z++)
+        for (int a = 1; a < NANGLES; a += 5)
+            check(g, "bilinear dh far", &m, at(20.5f + 0x1p-17f, 30.5f, angles[a], far[z]), 2, 300, 200000, &fx);
+    retro_map_free(&m);
+    rig_close(g);
+}

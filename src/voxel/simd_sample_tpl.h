@@ -18,6 +18,9 @@ typedef struct {
     simd_f32 fK, inv_K;   /* the wrap period S - 1 and its reciprocal */
     simd_f32 cw2;         /* (float)(W / 2) */
     simd_i32 ch2;         /* H / 2 */
+    /* bilinear */
+    simd_f32 fheight;     /* (float)height */
+    int dh_f32;           /* |height| <= 2^24: (float)height is exact (bilinear_dh) */
 } SIMD_NAME(consts);
 
 static void SIMD_NAME(init_consts)(SIMD_NAME(consts) *k, const retro_frame *f, const retro_simd_frame *sf)
@@ -37,6 +40,8 @@ static void SIMD_NAME(init_consts)(SIMD_NAME(consts) *k, const retro_frame *f, c
     k->inv_K = v_set1_f(sf->inv_K);
     k->cw2 = v_set1_f(f->cw2);
     k->ch2 = v_set1_i(f->ch2);
+    k->fheight = v_set1_f((float)sf->height);
+    k->dh_f32 = sf->height >= -(1 << 24) && sf->height <= (1 << 24);
 }
 
 /* floor(q) mod S for a power-of-two S: the two's-complement mask is the non-negative remainder. */
@@ -119,6 +124,24 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, co
     return v_min_i(v_max_i(v, v_zero_i()), k->H);
 }
 
+/* Bilinear's Δ = (float)((double)hf - height) (docs/EFFECTS.md) by one float subtraction where
+ * that is the same value, which is nearly always; else in double, two conversions each way.
+ * Proof: hf >= 0 (products and sums of non-negative heights and weights). With
+ * |height| <= 2^24, (float)height is exact. If hf = 0, both give -height, exact. If
+ * hf >= 2^-5, hf is a multiple of 2^-28 (24 significant bits, exponent >= -5), so the exact
+ * difference is a multiple of 2^-28 smaller than 2^24 + 256 < 2^25 in magnitude: 53 bits hold
+ * it, the double subtraction is exact, and its conversion rounds the exact difference once to
+ * nearest; the float subtraction of the exact operands hf and (float)height rounds that same
+ * exact difference once to nearest. A lane with 0 < hf < 2^-5 (a filtered height that is
+ * almost 0) sends the vector through double. */
+RETRO_SIMD_INLINE simd_f32 SIMD_NAME(bilinear_dh)(simd_f32 hf, const retro_frame *f, const SIMD_NAME(consts) *k)
+{
+    const simd_mask tiny = v_mand(v_fgt(hf, v_zero_f()), v_flt(hf, v_set1_f(0x1p-5f)));
+    if (k->dh_f32 && !v_bits(tiny))
+        return v_sub_f(hf, k->fheight);
+    return v_sub_f64(hf, (double)f->height);
+}
+
 /* What one distance's samples leave for projecting and painting them. */
 typedef struct {
     simd_i32 h;      /* the cells' heights (bilinear: unused) */
@@ -175,7 +198,7 @@ SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_N
     simd_f32 wx = v_sub_f(one, s->tx), wy = v_sub_f(one, s->ty);
     simd_f32 hf = v_add_f(v_mul_f(v_add_f(v_mul_f(h00, wx), v_mul_f(h10, s->tx)), wy),
                           v_mul_f(v_add_f(v_mul_f(h01, wx), v_mul_f(h11, s->tx)), s->ty));
-    s->dh = v_sub_f64(hf, (double)f->height);
+    s->dh = SIMD_NAME(bilinear_dh)(hf, f, k);
 }
 
 /* The row of each lane's sample: step 6 on the height or, with bilinear, on dh. */
