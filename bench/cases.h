@@ -26,6 +26,9 @@ enum : unsigned {
     GROUP_SKIP_LARGE = 1u << 8, // skip_large.cc: omp with and without skipping at a large frame
 };
 
+// The counter that carries a frame_median case's time per repetition, in ms.
+constexpr const char *FRAME_MEDIAN_COUNTER = "frame median ms";
+
 struct BenchCase {
     const retro_kernel *kernel;
     int kernel_index;            // row of retro_kernels[], for stable ordering
@@ -43,6 +46,10 @@ struct BenchCase {
     std::string label;           // the row's name in its extra table
     int repetitions = 0;         // its own repetition count; 0: the run's --benchmark_repetitions
     double min_time = 0;         // its own least seconds per repetition (not with --quick); 0: the run's
+    // A repetition's time is the median of its frames' times, not their mean (the submission:
+    // its spread across runs is a target, and the mean of a run follows any burst of the
+    // machine's other work). Every frame is then timed alone (bench_main.cc).
+    bool frame_median = false;
 
     // Filled by the reporter once the case has run.
     bool ran = false;

@@ -14,7 +14,9 @@ enum { SUBMISSION_RUNS = 10 };
 // Least seconds of frames per run. At the run's 0.05 s a run is some 80 frames, and one burst
 // from the virtual machine's neighbours moves its mean by more than the 15% the spread allows:
 // a run then measures the neighbours, not the submission. A course's timing renders frames for
-// longer than that too.
+// longer than that too. For the same reason a run's time is the median of its frames, not
+// their mean (BenchCase::frame_median): a burst that holds up a few frames of the run moves the
+// mean, not the median.
 constexpr double SUBMISSION_RUN_SECONDS = 0.5;
 
 // Adds the extra cases for the plan's scenes: the submission table on the course scenes, the

@@ -47,18 +47,19 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     // with --benchmark_display_aggregates_only, the first is.
     bool last = false;
     std::vector<double> each;
+    const char *ms = c->frame_median ? FRAME_MEDIAN_COUNTER : kMsCounter;
     for (const Run &r : runs) {
         if (r.error_occurred) {
             c->error = r.error_message;
             last = true;
         } else if (r.run_type == Run::RT_Aggregate) {
             if (r.aggregate_name == "median")
-                c->median_ms = counter(r, kMsCounter);
+                c->median_ms = counter(r, ms);
             else if (r.aggregate_name == "cv")
-                c->cv = counter(r, kMsCounter);
+                c->cv = counter(r, ms);
             last = true;
         } else {
-            each.push_back(counter(r, kMsCounter));
+            each.push_back(counter(r, ms));
             last |= r.repetitions <= 1;
         }
     }

@@ -80,6 +80,12 @@ if [ -d "${RETRO_SHARED:-../shared}/course" ]; then
   check "$tmp/sub/BENCH.md" '| submission spread | runs |$' "no spread column in the submission table"
   check "$tmp/sub/BENCH.md" '^| valley | [0-9.]* | – | – | [0-9.]* | [0-9.]*× | [0-9.]*% | 10 |$' \
     "the submission did not run 10 times with a spread"
+  # each run's time is the median of its frames (BenchCase::frame_median), one per repetition
+  n=$(grep -c '"frame median ms": [0-9]' "$tmp/sub/bench.json")
+  if [ "$n" -lt 10 ]; then
+    echo "FAIL: $n submission runs carry their frames' median in the JSON, not 10"
+    fail=1
+  fi
 else
   echo "note: ${RETRO_SHARED:-../shared}/course absent: the submission spread is not checked"
 fi
