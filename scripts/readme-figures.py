@@ -16,6 +16,19 @@ sys.dont_write_bytecode = True  # no __pycache__ beside the scripts: make target
 import readme_skipping  # noqa: E402 (after the line above)
 
 
+def effect_targets(rows, verdict):
+    """Issue 18's targets for the per-sample effects on the fast path, from the effect table's
+    last column (the fastest kernel for the effects against the fastest with none)."""
+    h, out = rows[0], []
+    cost = {r[0]: r[len(h) - 1] for r in rows[1:]}
+    for name, text, ok in (("bilinear", "bilinear ≤ 2.5× the plain frame", lambda x: x <= 2.5),
+                           ("lod", "lod (step growth 0.02) faster than the plain exact frame", lambda x: x < 1)):
+        if name in cost and cost[name].endswith("×"):
+            x = float(cost[name].rstrip("×"))
+            out.append(f"- **Target: with the fastest kernel, {text}** (issue 18): {cost[name]} — {verdict(ok(x))}.")
+    return [""] + out if out else []
+
+
 def tables(md):
     """{section title: [rows as lists of cells]} for every markdown table under a heading."""
     out, title, rows = {}, None, None
@@ -150,6 +163,7 @@ def bench_blocks(md, raw, raw_json=None):
         m = re.search(r"^Effects not called for cost nothing: .*$", md, re.M)
         if m:
             lines += ["", m.group(0)]
+        lines += effect_targets(e, verdict)
         blocks["bench:effects"] = "\n".join(lines)
 
     mesh_key = next((k for k in t if k.startswith("Mesh family")), None)

@@ -63,6 +63,13 @@ gen || { echo "FAIL: readme-figures.py on a run with issue 18's measurements"; e
 expect "| geomean (2 scenes) | 2.449 | 9.000 | 4.10× |" "the large-frame table is not quoted"
 expect "(geometric mean over the scenes): 4.10× (3.00× to 4.50× per scene) — met." "4.10x is not called met"
 expect "Its spread across 10 runs on valley (max − min over the median): 12.5% — met" "the spread is not quoted"
+# the effect targets: the bilinear row's cost from the run, called met at most 2.5x
+bil=$(awk -F' [|] ' '$1 == "| bilinear" { print $NF }' "$run/BENCH.md" | tr -d ' |')
+case "$(echo "${bil%×}" | awk '{ print ($1 <= 2.5) ? "met" : "not" }')" in
+  met) bv="met" ;;
+  *) bv="**not met**" ;;
+esac
+expect "bilinear ≤ 2.5× the plain frame** (issue 18): $bil — $bv." "the bilinear target is not quoted from the run"
 share=$(sed -n 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$run/skip-columns.txt")
 share=$(printf '%.1f' "$share")
 expect "\`ybuffer\` with skipping evaluates $share% of the samples" "the per-column block does not quote --stats' share"
