@@ -84,7 +84,9 @@ def bench_blocks(md, raw, raw_json=None):
     commit = context_field(md, "commit")
     machine = context_field(md, "machine")
     settings = context_field(md, "settings")
-    about = "; ".join([date, f"commit `{commit}`"] +
+    # the processor first: the same code's figures differ between machines of the same kind
+    cpu = context_field(md, "CPU").split(";")[0]
+    about = "; ".join(([f"on {cpu}"] if cpu != "unknown" else []) + [date, f"commit `{commit}`"] +
                       [x for x in (settings, machine) if x != "unknown"])
     blocks["bench:context"] = (
         f"Figures in this section come from one `make bench` run ({about}), published by "
