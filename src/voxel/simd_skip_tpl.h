@@ -40,7 +40,9 @@ static inline void SIMD_NAME(skip_init)(SIMD_NAME(skip_t) *g, const retro_frame 
  * bound stays <= its y, no lane paints in [d, d1] and their y-buffers are unchanged there, so
  * the run is skipped for the whole group; each lane's proof holds alone, with its own y.
  * Bilinear and mode lod as in retro_skip_run: the box is of the floors of q - 1/2 computed as
- * sample() does, one cell wider, bounded by M + 1 through the sample's own dh; a run of lod
+ * sample() does, one cell wider, bounded by M + 1 through the sample's own dh (the double
+ * difference: where bilinear_dh takes the float one it is the same value, and both are
+ * monotone in the height, so that of M + 1 bounds every filtered height's); a run of lod
  * indices samples distances between dist[n] and dist[n1] only, and kd is indexed by distance.
  * Levels: up after a skip, down after a run some lane may paint in, and the probe gives up at
  * RETRO_PYR_LMIN or after RETRO_SKIP_GROUP_TRIES failing windows. */
