@@ -131,9 +131,8 @@ static void time_frames(benchmark::State &st, const BenchCase *c, player_t *p, c
     }
     if (t.empty())
         return;
-    const size_t n = t.size();
     std::sort(t.begin(), t.end());
-    st.counters[FRAME_MEDIAN_COUNTER] = n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+    st.counters[FRAME_MEDIAN_COUNTER] = sorted_median(t);
 }
 
 static void run_case(benchmark::State &st, const BenchCase *c)

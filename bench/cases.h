@@ -26,6 +26,13 @@ enum : unsigned {
     GROUP_SKIP_LARGE = 1u << 8, // skip_large.cc: omp with and without skipping at a large frame
 };
 
+// The median of times sorted in increasing order (not empty).
+inline double sorted_median(const std::vector<double> &t)
+{
+    const size_t n = t.size();
+    return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
 // The counter that carries a frame_median case's time per repetition, in ms.
 constexpr const char *FRAME_MEDIAN_COUNTER = "frame median ms";
 

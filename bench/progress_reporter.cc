@@ -66,9 +66,8 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     // Our own median until (unless) the aggregate arrives.
     if (!each.empty()) {
         std::sort(each.begin(), each.end());
-        size_t n = each.size();
-        c->median_ms = n % 2 ? each[n / 2] : 0.5 * (each[n / 2 - 1] + each[n / 2]);
-        c->reps = static_cast<int>(n);
+        c->median_ms = sorted_median(each);
+        c->reps = static_cast<int>(each.size());
         c->rep_min = each.front();
         c->rep_max = each.back();
     }
