@@ -169,6 +169,32 @@ Test(hard, distances)
     rig_done(g, "hard/distances");
 }
 
+/* Mode course's SIMD column wraps positions in (-2K, 3K), K = S - 1, by one or two exact
+ * additions of K (simd_sample_tpl.h, course_wrap2) and others by the general remainder. Axis
+ * views put a column's positions on exactly x + d (angle 0), so these starts put whole vectors
+ * of distances on -2K, -K, 0, K, 2K and 3K, just inside and just outside the range, and the
+ * camera low enough that the terrain paints far out. */
+Test(hard, course_wrap_ranges)
+{
+    rig *g = rig_new();
+    retro_map maps[NMAPS];
+    load_maps(maps);
+    static const int on[] = {S5, S64};
+    static const int angles[] = {0, 90, 180, 270};
+    for (size_t mi = 0; mi < sizeof on / sizeof on[0]; mi++) {
+        const retro_map *m = &maps[on[mi]];
+        const float K = (float)(m->size - 1);
+        const float xs[] = {-2 * K - 1, -2 * K, nextafterf(-2 * K, 0), -2 * K + 0.5f, -K, -K - 0.25f, 0,
+                            K - 0.5f, K, 2 * K, 3 * K - 17, 3 * K - 16, nextafterf(3 * K, 0), 3 * K};
+        const int D = 3 * m->size + 40;
+        for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++)
+            for (size_t a = 0; a < sizeof angles / sizeof angles[0]; a++)
+                check_case(g, "course wrap", pose(xs[i], xs[i], angles[a], 60), CW, CH, D, m);
+    }
+    free_maps(maps, NMAPS);
+    rig_done(g, "hard/course_wrap_ranges");
+}
+
 Test(hard, heights)
 {
     rig *g = rig_new();

@@ -69,7 +69,8 @@ SIMD_NAME(course_sample)(const retro_frame *f, const retro_simd_frame *sf, const
         z = v_add_f(z, v_load_first_f(f->sy + d, n, live));
     }
     /* Dead lanes sample cell 0 (their q is 0). */
-    const simd_i32 i = SIMD_NAME(course_wrap)(x, k), j = SIMD_NAME(course_wrap)(z, k);
+    simd_i32 i, j;
+    SIMD_NAME(course_wrap2)(x, z, k, &i, &j);
     simd_i32 h;
     if (f->S < 2) {
         h = SIMD_NAME(heights)(f, sf, k, i, j, at, 0);

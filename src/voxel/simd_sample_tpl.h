@@ -16,6 +16,7 @@ typedef struct {
     simd_i32 wrap;        /* S - 1 when S is a power of two */
     /* mode course */
     simd_f32 fK, inv_K;   /* the wrap period S - 1 and its reciprocal */
+    simd_f32 course_lo, course_hi, course_negK; /* -2K and 3K: course_wrap2's range; -K */
     simd_f32 cw2;         /* (float)(W / 2) */
     simd_i32 ch2;         /* H / 2 */
     /* bilinear */
@@ -38,6 +39,9 @@ static void SIMD_NAME(init_consts)(SIMD_NAME(consts) *k, const retro_frame *f, c
     k->wrap = v_set1_i(sf->pow2_mask);
     k->fK = v_set1_f(sf->fK);
     k->inv_K = v_set1_f(sf->inv_K);
+    k->course_lo = v_set1_f(-2.0f * sf->fK);
+    k->course_hi = v_set1_f(3.0f * sf->fK);
+    k->course_negK = v_set1_f(-sf->fK);
     k->cw2 = v_set1_f(f->cw2);
     k->ch2 = v_set1_i(f->ch2);
     k->fheight = v_set1_f((float)sf->height);
@@ -79,6 +83,42 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(co
     /* float_mod */
     r = v_add_where(v_flt(r, zero), r, K);
     return v_cvtt_i(v_keep_f(v_flt(r, K), r));
+}
+
+/* course_wrap of q in (-2K, 3K) (course_wrap2, where it is proved). */
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap_near)(simd_f32 q, const SIMD_NAME(consts) *k)
+{
+    const simd_f32 zero = v_zero_f(), K = k->fK;
+    simd_f32 r = v_sub_where(v_fge(q, K), q, K);
+    r = v_sub_where(v_fge(r, K), r, K);
+    r = v_add_where(v_fle(r, k->course_negK), r, K);
+    r = v_add_where(v_flt(r, zero), r, K);
+    return v_cvtt_i(v_keep_f(v_flt(r, K), r));
+}
+
+/* course_wrap of x and of z, by fewer steps when every lane of both lies in (-2K, 3K), which
+ * the positions of a frame at a usual distance do. Proof that the result is the same: K is an
+ * integer below 2^14 (S <= RETRO_MAX_MAP), and for |q| < 3K < 2^24 every float q is a
+ * multiple of ulp(q) <= 1, so K is one too, and q - K (or q + K) of magnitude at most |q| is
+ * an exact float (a multiple of ulp(q) below 2^(e+1), q in [2^e, 2^(e+1))). So for q in
+ * [K, 3K) one or two subtractions of K give q - nK, the exact fmodf, in [0, K); for q in
+ * (-2K, -K] one addition gives q + K, fmodf's exact value in (-K, 0] (fmodf gives -0 at
+ * q = -K, this +0: both become cell 0 below); for q in (-K, K) fmodf is q. Then float_mod's
+ * rounded addition of K to a negative remainder and the test r < K are course_wrap's own, on
+ * the same remainder. A NaN lane fails the range test and sends the vector through
+ * course_wrap. tests/test_hard_cases.c (course_wrap_ranges) puts vectors on every bound. */
+RETRO_SIMD_INLINE void SIMD_NAME(course_wrap2)(simd_f32 x, simd_f32 z, const SIMD_NAME(consts) *k, simd_i32 *i,
+                                               simd_i32 *j)
+{
+    const unsigned all = (1u << SIMD_LANES) - 1;
+    const simd_f32 lo = k->course_lo, hi = k->course_hi;
+    if ((v_bits(v_mand(v_fgt(x, lo), v_flt(x, hi))) & v_bits(v_mand(v_fgt(z, lo), v_flt(z, hi)))) != all) {
+        *i = SIMD_NAME(course_wrap)(x, k);
+        *j = SIMD_NAME(course_wrap)(z, k);
+        return;
+    }
+    *i = SIMD_NAME(course_wrap_near)(x, k);
+    *j = SIMD_NAME(course_wrap_near)(z, k);
 }
 
 /* The index of cell (i, j) in the tiled maps (simd_common.h's retro_simd_tiled). */
