@@ -28,6 +28,16 @@ grep -q '^ideal max bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.
 ! grep -q '^ideal' "$tmp/off.txt" || fail "--no-skip --stats printed an ideal bound"
 ideal=$(sed -n 's/^ideal max bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
 awk -v a="$ideal" 'BEGIN { exit !(a > 0 && a <= 100) }' || fail "ideal share '$ideal'"
+# mode course skips in the ybuffer strip too (skip_course.h): --stats says so and counts its probes
+"$retro" render $map -m course $args "$tmp/c.ppm" --stats >"$tmp/con.txt" || fail "render -m course --stats"
+"$retro" render $map -m course --no-skip $args "$tmp/cn.ppm" --stats >"$tmp/coff.txt" || fail "course --no-skip --stats"
+cmp -s "$tmp/c.ppm" "$tmp/cn.ppm" || fail "mode course: --no-skip changed the image"
+grep -q 'skipping on$' "$tmp/con.txt" || fail "course --stats: $(head -n 1 "$tmp/con.txt")"
+grep -q 'skipping off$' "$tmp/coff.txt" || fail "course --no-skip --stats: $(head -n 1 "$tmp/coff.txt")"
+grep -q '^probes: [1-9][0-9]*, pyramid windows read: [1-9]' "$tmp/con.txt" || fail "course --stats: no probes counted"
+grep -q '^probes: 0, pyramid windows read: 0$' "$tmp/coff.txt" || fail "course --no-skip --stats counted probes"
+on=$(num evaluated "$tmp/con.txt"); off=$(num evaluated "$tmp/coff.txt")
+[ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "course evaluated: $on with skipping, $off without"
 # no stats and no output file when the input is bad
 "$retro" render $map --stats -d 12x -o "$tmp/bad.ppm" >"$tmp/bad.txt" 2>/dev/null
 [ $? -eq 2 ] && [ ! -e "$tmp/bad.ppm" ] && [ ! -s "$tmp/bad.txt" ] || fail "bad input with --stats"

@@ -138,7 +138,9 @@ static int print_stats(render_job *j, const player_t *p)
     int n = f->mode == RETRO_MODE_LOD ? f->ndist : f->D;
     double all = (double)f->W * (double)(n > 1 ? n - 1 : 0);
     const retro_sample_counts *s = &retro_ybuffer_counts;
-    printf("samples: %.0f (W x (D-1)), skipping %s\n", all, retro_skip_applies(f) ? "on" : "off");
+    /* the ybuffer strip skips whenever the frame carries a pyramid: modes exact and lod, and mode
+     * course where its drift is bounded (skip_course.h) */
+    printf("samples: %.0f (W x (D-1)), skipping %s\n", all, f->pyr ? "on" : "off");
     printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
     printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
     printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);

@@ -121,7 +121,13 @@ retro_skip_course(const retro_frame *f, retro_course_col *c, const float *qx, co
     int L = c->level, at = 0, I0 = 0, J0 = 0; /* the floors at distance at (0: none yet) */
     if (lmin > lmax)
         return d;
+#ifdef RETRO_COUNT_SAMPLES
+    retro_ybuffer_counts.probes++;
+#endif
     while (d < d_end && L >= lmin) {
+#ifdef RETRO_COUNT_SAMPLES
+        retro_ybuffer_counts.windows++;
+#endif
         const int B = 1 << L;
         const float est = (float)(B - 2 * E - 1) * c->inv_r; /* distances: an estimate */
         const int len = est >= (float)(d_end - d) ? d_end - d : est < 1.0f ? 1 : (int)est;
