@@ -69,6 +69,15 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(wrap_any)(simd_f32 q, const SIMD_NAME(const
 
 /* (int)float_mod(q, S - 1) for |q| < 2^23 (docs/KERNELS.md, "Course wrap"): fmodf by one
  * truncated quotient and one correction, then the course's float_mod steps as written. */
+/* The cell of fmodf's remainder r: float_mod's rounded addition of K to a negative r, then
+ * 0 for a sum that rounded up to K. */
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_cell)(simd_f32 r, const SIMD_NAME(consts) *k)
+{
+    const simd_f32 K = k->fK;
+    r = v_add_where(v_flt(r, v_zero_f()), r, K);
+    return v_cvtt_i(v_keep_f(v_flt(r, K), r));
+}
+
 RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(consts) *k)
 {
     const simd_f32 zero = v_zero_f(), K = k->fK;
@@ -80,20 +89,17 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap)(simd_f32 q, const SIMD_NAME(co
     r = v_sub_where(v_mandnot(neg, v_fge(r, K)), r, K);
     r = v_sub_where(v_mand(neg, v_fgt(r, zero)), r, K);
     r = v_add_where(v_mand(neg, v_fle(r, v_sub_f(zero, K))), r, K);
-    /* float_mod */
-    r = v_add_where(v_flt(r, zero), r, K);
-    return v_cvtt_i(v_keep_f(v_flt(r, K), r));
+    return SIMD_NAME(course_cell)(r, k);
 }
 
 /* course_wrap of q in (-2K, 3K) (course_wrap2, where it is proved). */
 RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap_near)(simd_f32 q, const SIMD_NAME(consts) *k)
 {
-    const simd_f32 zero = v_zero_f(), K = k->fK;
+    const simd_f32 K = k->fK;
     simd_f32 r = v_sub_where(v_fge(q, K), q, K);
     r = v_sub_where(v_fge(r, K), r, K);
     r = v_add_where(v_fle(r, k->course_negK), r, K);
-    r = v_add_where(v_flt(r, zero), r, K);
-    return v_cvtt_i(v_keep_f(v_flt(r, K), r));
+    return SIMD_NAME(course_cell)(r, k);
 }
 
 /* course_wrap of x and of z, by fewer steps when every lane of both lies in (-2K, 3K), which
@@ -103,10 +109,10 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_wrap_near)(simd_f32 q, const SIMD_NA
  * an exact float (a multiple of ulp(q) below 2^(e+1), q in [2^e, 2^(e+1))). So for q in
  * [K, 3K) one or two subtractions of K give q - nK, the exact fmodf, in [0, K); for q in
  * (-2K, -K] one addition gives q + K, fmodf's exact value in (-K, 0] (fmodf gives -0 at
- * q = -K, this +0: both become cell 0 below); for q in (-K, K) fmodf is q. Then float_mod's
- * rounded addition of K to a negative remainder and the test r < K are course_wrap's own, on
- * the same remainder. A NaN lane fails the range test and sends the vector through
- * course_wrap. tests/test_hard_cases.c (course_wrap_ranges) puts vectors on every bound. */
+ * q = -K, this +0: both become cell 0 below); for q in (-K, K) fmodf is q. Then course_cell,
+ * course_wrap's own last steps, takes the same remainder to its cell. A NaN lane fails the
+ * range test and sends the vector through course_wrap. tests/test_hard_cases.c
+ * (course_wrap_ranges) puts vectors on every bound. */
 RETRO_SIMD_INLINE void SIMD_NAME(course_wrap2)(simd_f32 x, simd_f32 z, const SIMD_NAME(consts) *k, simd_i32 *i,
                                                simd_i32 *j)
 {
