@@ -17,6 +17,7 @@
 
 #include "retro_internal.h"
 #include "hard_rig.h"
+#include "simd_common.h"
 #include "test_util.h"
 
 
@@ -193,6 +194,59 @@ Test(hard, course_wrap_ranges)
     }
     free_maps(maps, NMAPS);
     rig_done(g, "hard/course_wrap_ranges");
+}
+
+/* The course's row of height h at distance d for camera height hc, as SEMANTICS.md computes it
+ * (float, truncated, then + H/2, clamped). */
+static int course_row(int W, int H, int h, int hc, int d)
+{
+    float q = (float)(W / 2) * (float)(h - hc) / (float)d;
+    long v = (long)q + H / 2;
+    return v < 0 ? 0 : v > H ? H : (int)v;
+}
+
+/* Mode course's SIMD columns list a tile column's spans and paint the finished ones when the
+ * list holds RETRO_SIMD_SPAN_LIST (simd_course_tpl.h). Heights that depend on x alone, chosen
+ * distance by distance to raise the y-buffer by as little as they can, give every column of a
+ * 1080-row frame (the tallest tile) looking along +x several hundred spans, more than the list
+ * holds: counted on naive's image as runs of one colour down a column, each x its own colour. */
+Test(hard, course_span_lists)
+{
+    enum { W = 256, H = 1080, D = 1000, S = 1024, HC = 900 };
+    rig *g = rig_new();
+    retro_map m;
+    char err[128];
+    cr_assert_eq(retro_map_alloc(&m, S, err, sizeof err), 0, "%s", err);
+    uint8_t f[S] = {0};
+    for (int d = 1, y = 0; d < D; d++)
+        for (int h = 0; h < 256; h++)
+            if (course_row(W, H, h, HC, d) > y) {
+                f[d] = (uint8_t)h;
+                y = course_row(W, H, h, HC, d);
+                break;
+            }
+    for (int j = 0; j < S; j++)
+        for (int i = 0; i < S; i++) {
+            m.height[(size_t)j * S + i] = f[i];
+            m.color[(size_t)j * S + i] = (uint32_t)(i + 1) << 8;
+        }
+    player_t p = pose(0.5f, 300.5f, 0, HC);
+    ctx_t c = {W, H, S, D, SKY, m.height, m.color, NULL};
+    char what[320];
+    describe(what, sizeof what, "course span lists", &p, W, H, D, S);
+    if (naive_ref(g, what, RETRO_MODE_COURSE, &p, c) == 0) {
+        int fewest = H;
+        for (int u = 0; u < W; u++) {
+            int runs = 1;
+            for (int r = 1; r < H; r++)
+                runs += g->ref[(size_t)r * W + u] != g->ref[(size_t)(r - 1) * W + u];
+            fewest = runs < fewest ? runs : fewest;
+        }
+        cr_assert_gt(fewest, RETRO_SIMD_SPAN_LIST, "the case needs columns of more spans than a list holds (fewest %d)", fewest);
+        all_kernels_match(g, what, RETRO_MODE_COURSE, &p, c);
+    }
+    retro_map_free(&m);
+    rig_done(g, "hard/course_span_lists");
 }
 
 Test(hard, heights)

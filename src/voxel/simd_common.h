@@ -58,13 +58,16 @@ typedef struct retro_simd_frame {
 #define RETRO_SIMD_COURSE_BOUND 4194304.0 /* 2^22, leaving 2^22 for the rounding of W steps */
 /* Mode course's columns paint into a tile of RETRO_SIMD_COURSE_GROUP columns (64 bytes of a row
  * of out) and RETRO_SIMD_COURSE_ROWS rows at most, on the strip's stack (simd_course_tpl.h's
- * course_group): about 70 KB, kept that small because the strip may run on a thread whose
- * stack is small (musl's default is 128 KB). Taller frames paint into out. */
+ * course_group): about 70 KB (80 KB with the chains' span lists), kept that small because the
+ * strip may run on a thread whose stack is small (musl's default is 128 KB). Taller frames paint into out. */
 #define RETRO_SIMD_COURSE_GROUP 16
 #define RETRO_SIMD_COURSE_ROWS 1080
 /* Mode course walks this many of a group's columns in one loop (course_cols), independent
  * chains whose gathers overlap; it divides RETRO_SIMD_COURSE_GROUP. */
 #define RETRO_SIMD_COURSE_CHAINS 4
+/* Mode course: the spans a tile column lists before it paints the finished ones (a few KB of
+ * the strip's stack per chain). hard/course_span_lists renders columns with more. */
+#define RETRO_SIMD_SPAN_LIST 256
 /* Mode course: a truncated row beyond +-2^20 clamps to H or 0 whatever H/2 adds (H <= 2^14),
  * so the vector kernels clamp the float there and convert it in int32. */
 #define RETRO_SIMD_ROW_CLAMP 1048576.0f

@@ -21,11 +21,9 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_span)(const retro_frame *f, uint32_t *co
         retro_simd_span(f, u, e, v, colour);
 }
 
-/* The y-buffer pass over distances d..d+LANES-1 of column u: lane l paints rows e+1..v_l, as a
- * column span, when v_l exceeds e = max(y, v_<l), an exclusive prefix max in log2(LANES)
- * shifted maxes. Returns the new y-buffer. */
-RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col, int u, int y, simd_i32 v,
-                                             simd_i32 at)
+/* The y-buffer after each lane of v (an inclusive prefix max from y, in log2(LANES) shifted
+ * maxes); *e gets the y-buffer before each lane (the exclusive one). */
+RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_prefix)(int y, simd_i32 v, simd_i32 *e)
 {
     const simd_i32 fill = v_set1_i(y);
     simd_i32 p = v_max_i(v, fill);
@@ -37,7 +35,17 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
 #if SIMD_LANES > 8
     p = v_max_i(p, V_SHIFT_UP(p, fill, 8));
 #endif
-    simd_i32 e = V_SHIFT_UP(p, fill, 1);
+    *e = V_SHIFT_UP(p, fill, 1);
+    return p;
+}
+
+/* The y-buffer pass over distances d..d+LANES-1 of column u: lane l paints rows e+1..v_l, as a
+ * column span, when v_l exceeds e = max(y, v_<l) (course_prefix). Returns the new y-buffer. */
+RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col, int u, int y, simd_i32 v,
+                                             simd_i32 at)
+{
+    simd_i32 e;
+    const simd_i32 p = SIMD_NAME(course_prefix)(y, v, &e);
     unsigned up = v_bits(v_igt(v, e));
     SIMD_COUNT_LANES(painting, __builtin_popcount(up));
     if (up) {
@@ -53,6 +61,60 @@ RETRO_SIMD_INLINE int SIMD_NAME(course_scan)(const retro_frame *f, uint32_t *col
     }
     return v_last_i(p);
 }
+
+#ifdef v_compress_store
+/* A tile column's spans in the order they were found: span k paints tile entries e[k] ..
+ * e[k + 1] - 1 with at[k]'s colour. Spans are short (a few rows each, often several per
+ * vector), so painting each as it is found loops over a vector's painting lanes, a loop whose
+ * count the branch predictor cannot know; the list is packed without branches (vector
+ * compress) and painted in one loop per column whose inner loop almost always runs once. It
+ * holds RETRO_SIMD_SPAN_LIST spans before the finished ones are painted, to keep the strip's
+ * stack small; the extra entries take a compress's whole-vector store and the closing end. */
+typedef struct {
+    int n;
+    int e[RETRO_SIMD_SPAN_LIST + SIMD_LANES + 1];
+    uint32_t at[RETRO_SIMD_SPAN_LIST + SIMD_LANES];
+} SIMD_NAME(spans);
+
+/* Paints spans 0..n-1 of s into col; e[n] is where the last one ends. Each vector store may
+ * run past its span's end: into the next span, stored after it, or into the rows that the
+ * column's sky fill (after every span) or its padding take. */
+RETRO_SIMD_INLINE void SIMD_NAME(spans_paint)(const retro_frame *f, uint32_t *col, const SIMD_NAME(spans) *s, int n)
+{
+    for (int k = 0; k < n; k++) {
+        const simd_i32 c = v_set1_i((int)SIMD_NAME(colour_of)(f, s->at[k], 0));
+        int i = s->e[k];
+        do {
+            v_store_i(col + i, c);
+            i += SIMD_LANES;
+        } while (i < s->e[k + 1]);
+    }
+}
+
+/* course_scan for a column of the tile: the same y-buffer pass, the painting lanes' spans
+ * appended to s instead of painted. */
+RETRO_SIMD_INLINE int SIMD_NAME(course_scan_list)(const retro_frame *f, uint32_t *col, SIMD_NAME(spans) *s, int y,
+                                                  simd_i32 v, simd_i32 at)
+{
+    simd_i32 e;
+    const simd_i32 p = SIMD_NAME(course_prefix)(y, v, &e);
+    const simd_mask up = v_igt(v, e);
+    const int m = __builtin_popcount(v_bits(up));
+    SIMD_COUNT_LANES(painting, m);
+    int n = s->n;
+    v_compress_store(s->e + n, up, e);
+    v_compress_store((int *)s->at + n, up, at);
+    n += m;
+    if (n > RETRO_SIMD_SPAN_LIST) { /* all but the last span have their ends */
+        SIMD_NAME(spans_paint)(f, col, s, n - 1);
+        s->e[0] = s->e[n - 1];
+        s->at[0] = s->at[n - 1];
+        n = 1;
+    }
+    s->n = n;
+    return v_last_i(p);
+}
+#endif
 
 /* The rows of distances d..d+LANES-1 (those below D; the others get v = 0) of the column whose
  * positions qx, qy hold, and in *at what the scan needs for colours. */
@@ -121,7 +183,8 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_advance)(const retro_frame *f, float *qx
  * gathers, not the arithmetic, are what a vector waits on, and one column's scan runs while
  * the others' gathers are in flight. A column stops at its own early exit. This column does not
  * skip (docs/SKIPPING.md, mode course). Column c paints into cols[c], a column of the strip's
- * tile (course_group), or into out when cols[c] is NULL. */
+ * tile (course_group), or into out when cols[c] is NULL; with v_compress_store, a tile column
+ * lists its spans as it goes and paints them when it stops (course_scan_list). */
 RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_simd_frame *sf,
                                               const SIMD_NAME(consts) *k, float *qx, float *qy, uint32_t *const *cols,
                                               int u, const int N)
@@ -130,6 +193,11 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
     int y[RETRO_SIMD_COURSE_CHAINS] = {0}, d = 1;
     simd_i32 at0[RETRO_SIMD_COURSE_CHAINS], v0[RETRO_SIMD_COURSE_CHAINS];
     simd_i32 at1[RETRO_SIMD_COURSE_CHAINS], v1[RETRO_SIMD_COURSE_CHAINS];
+#ifdef v_compress_store
+    SIMD_NAME(spans) spans[RETRO_SIMD_COURSE_CHAINS];
+    for (int c = 0; c < N; c++)
+        spans[c].n = 0;
+#endif
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++) {
         v0[c] = SIMD_NAME(course_sample)(f, sf, k, qx, qy, d, &at0[c], c);
@@ -155,11 +223,29 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         }
         if (!live)
             break;
+#ifdef v_compress_store
+        if (cols[0]) {
+            RETRO_CHAINS_UNROLLED
+            for (int c = 0; c < N; c++)
+                if (live >> c & 1)
+                    y[c] = SIMD_NAME(course_scan_list)(f, cols[c], &spans[c], y[c], v[c], at[c]);
+            continue;
+        }
+#endif
         RETRO_CHAINS_UNROLLED
         for (int c = 0; c < N; c++)
             if (live >> c & 1)
                 y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c]);
     }
+#ifdef v_compress_store
+    if (cols[0]) {
+        RETRO_CHAINS_UNROLLED
+        for (int c = 0; c < N; c++) {
+            spans[c].e[spans[c].n] = y[c];
+            SIMD_NAME(spans_paint)(f, cols[c], &spans[c], spans[c].n);
+        }
+    }
+#endif
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++)
         SIMD_NAME(course_span)(f, cols[c], u + c, y[c], f->H, f->sky);

@@ -48,6 +48,8 @@
  *                                  v_max_where may assume a >= 0)
  *   v_set1_16(x) v_mullo_16 v_add_16 (a, b) v_srli_16(a, n)   16-bit lane operations (fog)
  * and optionally
+ *   v_compress_store(p, m, a)      the lanes of m, in lane order, to p[0..popcount(m) - 1]; it may
+ *                                  write all of p[0..SIMD_LANES - 1] (mode course's span lists)
  *   SIMD_TILE_BLOCK 1 with SIMD_NAME(tile_block)(out, at, W, tile, th): mode course's tile
  *                   columns (LANES of them, th entries apart) rows r..r+LANES-1 into out, row
  *                   r + k at out + at - k*W, by a transpose in registers; without it the tile
@@ -238,6 +240,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef v_gather_colours
 #undef v_rows
 #undef v_maskstore
+#undef v_compress_store
 #undef v_min_where
 #undef v_max_where
 #undef v_set1_16

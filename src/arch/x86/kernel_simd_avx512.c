@@ -70,6 +70,7 @@
 #define v_gather_colours(c, at, m) _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, at, (const void *)(c), 4)
 #define v_rows(r, y, top) _mm512_mask_cmpge_epi32_mask(_mm512_cmplt_epi32_mask(y, r), top, r)
 #define v_maskstore(p, m, a) _mm512_mask_storeu_epi32(p, m, a)
+#define v_compress_store(p, m, a) _mm512_storeu_si512(p, _mm512_maskz_compress_epi32(m, a))
 #define v_min_where(m, a) _mm512_mask_reduce_min_epi32(m, a)
 #define v_max_where(m, a) _mm512_mask_reduce_max_epi32(m, a)
 #define v_set1_16(x) _mm512_set1_epi16(x)
