@@ -196,15 +196,6 @@ Test(hard, course_wrap_ranges)
     rig_done(g, "hard/course_wrap_ranges");
 }
 
-/* The course's row of height h at distance d for camera height hc, as SEMANTICS.md computes it
- * (float, truncated, then + H/2, clamped). */
-static int course_row(int W, int H, int h, int hc, int d)
-{
-    float q = (float)(W / 2) * (float)(h - hc) / (float)d;
-    long v = (long)q + H / 2;
-    return v < 0 ? 0 : v > H ? H : (int)v;
-}
-
 /* Mode course's SIMD columns list a tile column's spans and paint the finished ones when the
  * list holds RETRO_SIMD_SPAN_LIST (simd_course_tpl.h). Heights that depend on x alone, chosen
  * distance by distance to raise the y-buffer by as little as they can, give every column of a
@@ -219,12 +210,14 @@ Test(hard, course_span_lists)
     cr_assert_eq(retro_map_alloc(&m, S, err, sizeof err), 0, "%s", err);
     uint8_t f[S] = {0};
     for (int d = 1, y = 0; d < D; d++)
-        for (int h = 0; h < 256; h++)
-            if (course_row(W, H, h, HC, d) > y) {
+        for (int h = 0; h < 256; h++) {
+            const int v = retro_course_row((float)(W / 2), H / 2, H, h - HC, d);
+            if (v > y) {
                 f[d] = (uint8_t)h;
-                y = course_row(W, H, h, HC, d);
+                y = v;
                 break;
             }
+        }
     for (int j = 0; j < S; j++)
         for (int i = 0; i < S; i++) {
             m.height[(size_t)j * S + i] = f[i];

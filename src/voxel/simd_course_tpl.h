@@ -193,10 +193,15 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
     int y[RETRO_SIMD_COURSE_CHAINS] = {0}, d = 1;
     simd_i32 at0[RETRO_SIMD_COURSE_CHAINS], v0[RETRO_SIMD_COURSE_CHAINS];
     simd_i32 at1[RETRO_SIMD_COURSE_CHAINS], v1[RETRO_SIMD_COURSE_CHAINS];
-#ifdef v_compress_store
+#ifdef v_compress_store /* a tile's columns list their spans */
     SIMD_NAME(spans) spans[RETRO_SIMD_COURSE_CHAINS];
     for (int c = 0; c < N; c++)
         spans[c].n = 0;
+#define COURSE_SCAN(c)                                                                                                \
+    (cols[0] ? SIMD_NAME(course_scan_list)(f, cols[c], &spans[c], y[c], v[c], at[c])                                 \
+             : SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c]))
+#else
+#define COURSE_SCAN(c) SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c])
 #endif
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++) {
@@ -223,19 +228,10 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         }
         if (!live)
             break;
-#ifdef v_compress_store
-        if (cols[0]) {
-            RETRO_CHAINS_UNROLLED
-            for (int c = 0; c < N; c++)
-                if (live >> c & 1)
-                    y[c] = SIMD_NAME(course_scan_list)(f, cols[c], &spans[c], y[c], v[c], at[c]);
-            continue;
-        }
-#endif
         RETRO_CHAINS_UNROLLED
         for (int c = 0; c < N; c++)
             if (live >> c & 1)
-                y[c] = SIMD_NAME(course_scan)(f, cols[c], u + c, y[c], v[c], at[c]);
+                y[c] = COURSE_SCAN(c);
     }
 #ifdef v_compress_store
     if (cols[0]) {
@@ -246,6 +242,7 @@ RETRO_SIMD_INLINE void SIMD_NAME(course_cols)(const retro_frame *f, const retro_
         }
     }
 #endif
+#undef COURSE_SCAN
     RETRO_CHAINS_UNROLLED
     for (int c = 0; c < N; c++)
         SIMD_NAME(course_span)(f, cols[c], u + c, y[c], f->H, f->sky);
