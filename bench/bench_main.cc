@@ -25,6 +25,7 @@ extern "C" {
 #include "progress_reporter.h"
 #include "run_context.h"
 #include "skip_large.h"
+#include "steady.h"
 
 // The case being timed keeps one context and one frame across all its runs (warm-up,
 // iteration-count probing, repetitions), so nothing is allocated per frame; moving to the
@@ -77,7 +78,7 @@ static double share_of(const BenchCase *c, double count)
 // NaN for other kernels, modes other than exact, and frames the vector path does not render.
 static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
 {
-    if (c->direct || c->mode != RETRO_MODE_EXACT)
+    if (c->direct || c->mode != RETRO_MODE_EXACT || (c->groups & GROUP_STEADY))
         return std::nan("");
     const char *name = c->kernel->name;
     retro_kernel k;
@@ -103,7 +104,8 @@ static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
 // skipping on this frame, beside what the kernel evaluates. omp's skipping cases only.
 static double ideal_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
 {
-    if (c->direct || c->mode != RETRO_MODE_EXACT || c->no_skip || std::strcmp(c->kernel->name, "omp"))
+    if (c->direct || c->mode != RETRO_MODE_EXACT || c->no_skip || std::strcmp(c->kernel->name, "omp") ||
+        (c->groups & GROUP_STEADY))
         return std::nan("");
     retro_kernel k = *retro_kernel_find("ybuffer");
     k.fn = retro_kernel_ybuffer_counted;
@@ -203,6 +205,9 @@ static void run_case(benchmark::State &st, const BenchCase *c)
                                            Counter::kIsIterationInvariantRate);
 }
 
+// Cases between two checkpoints of the reference frame (steady.h): about a dozen in a full run.
+constexpr int STEADY_EVERY = 30;
+
 static int load_scenes(bench_scene *scenes, const Options &o, BenchPlan *plan)
 {
     const char *shared = std::getenv("RETRO_SHARED");
@@ -269,6 +274,7 @@ int main(int argc, char **argv)
     plan_peer(&plan);
     plan_skip_large(&plan);
     plan_mesh(&plan, quick);
+    plan_steady(&plan, STEADY_EVERY);
     for (const auto &c : plan.cases) {
         auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
         b->Unit(benchmark::kMillisecond);

@@ -5,6 +5,7 @@
 #include "mesh_cases.h"
 #include "peer_cases.h"
 #include "skip_large.h"
+#include "steady.h"
 
 #include <algorithm>
 #include <array>
@@ -158,15 +159,19 @@ static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx
          "iteration calls retro_render() in libretro, built with the C flags above. The "
          "library's own asserts run only between timed loops.\n";
     int noisy = report_noisy_rows(plan);
-    if (ctx.busy || noisy)
+    std::string drift = steady_note(plan);
+    bool flag = ctx.busy || noisy || !drift.empty();
+    if (flag)
         o << "\n> **Noisy run.**";
-    if (ctx.busy)
-        o << " The machine was busy when the run started (" << ctx.machine << ").";
     if (noisy)
         o << " " << noisy << (noisy == 1 ? " row has" : " rows have")
           << " a spread over repetitions above " << static_cast<int>(NOISY_CV * 100)
           << "% (max cv marked ⚠): its medians may be off by as much.";
-    if (ctx.busy || noisy)
+    if (!drift.empty())
+        o << " " << drift;
+    if (ctx.busy)
+        o << " The machine was busy when the run started (" << ctx.machine << ").";
+    if (flag)
         o << " Rerun on a quiet machine before drawing conclusions.\n";
 }
 
@@ -204,6 +209,7 @@ bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunCon
     extras_tables(o, plan);
     peer_table(o, plan);
     mesh_table(o, plan);
+    steady_table(o, plan);
     std::map<std::string, std::string> skipped; // kernel -> first reason
     for (const auto &c : plan.cases)
         if (c->ran && !c->error.empty())

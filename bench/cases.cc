@@ -8,7 +8,7 @@ static bool same(const BenchCase &c, const retro_kernel *k, int threads, const b
 {
     if (c.no_skip != no_skip)
         return false;
-    return !c.direct && !c.fx && !(c.groups & (GROUP_SUBMISSION | GROUP_EFFECTS)) && c.kernel == k &&
+    return !c.direct && !c.fx && !(c.groups & (GROUP_SUBMISSION | GROUP_EFFECTS | GROUP_STEADY)) && c.kernel == k &&
            c.threads == threads && c.scene == s && c.mode == mode && c.W == w &&
            c.H == h && c.D == d;
 }

@@ -24,6 +24,7 @@ enum : unsigned {
     GROUP_MESH = 1u << 6,       // mesh_cases.cc: the mesh family's kernels, mode binary32
     GROUP_MESH_SWEEP = 1u << 7, // mesh_cases.cc: the mesh kernels swept over resolution, distance
     GROUP_SKIP_LARGE = 1u << 8, // skip_large.cc: omp with and without skipping at a large frame
+    GROUP_STEADY = 1u << 9,     // steady.cc: the reference frame at checkpoints through the run
 };
 
 // The median of times sorted in increasing order (not empty).
@@ -57,6 +58,7 @@ struct BenchCase {
     // its spread across runs is a target, and the mean of a run follows any burst of the
     // machine's other work). Every frame is then timed alone (bench_main.cc).
     bool frame_median = false;
+    int checkpoint = -1;         // GROUP_STEADY: which checkpoint of the run (steady.h)
 
     // Filled by the reporter once the case has run.
     bool ran = false;
@@ -67,6 +69,7 @@ struct BenchCase {
     double rep_min = std::numeric_limits<double>::quiet_NaN();
     double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
+    double done_at = std::numeric_limits<double>::quiet_NaN(); // seconds into the run when it finished
     // Mesh cases: the frame's counts (retro_mesh_stats), the same every frame of the case.
     mutable double tri_submitted = std::numeric_limits<double>::quiet_NaN();
     mutable double tri_drawn = std::numeric_limits<double>::quiet_NaN(); // after culling and clipping

@@ -74,6 +74,7 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     if (!last)
         return;
     c->ran = true;
+    c->done_at = seconds();
     done_++;
     if (!c->error.empty())
         std::fprintf(stderr, "[%3d] %6.1fs  %-46s skipped: %s\n", done_, seconds(),

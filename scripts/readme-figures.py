@@ -60,13 +60,29 @@ def context_field(md, name):
 
 
 def noisy_note(md):
-    """The run's own noise warning, carried into the README so no figure hides it."""
-    m = re.search(r"^> \*\*Noisy run\.\*\* (\d+) rows", md, re.M)
+    """The run's own noise warning, carried into the README so no figure hides it: the rows whose
+    repetitions spread, the reference frame's drift across the run, a machine busy at the start."""
+    m = re.search(r"^> \*\*Noisy run\.\*\*(.*)$", md, re.M)
     if not m:
         return ""
-    return (f" **This run was noisy:** {m.group(1)} rows spread more than 10% over their repetitions "
-            "(marked ⚠ below and in BENCH.md), so their medians, and conclusions drawn from them, are "
-            "provisional.")
+    note = m.group(1)
+    parts = []
+    rows = re.search(r"(\d+) rows? ha(?:s|ve) a spread over repetitions above (\d+)%", note)
+    if rows:
+        n = int(rows.group(1))
+        parts.append(f"{n} {'row spreads' if n == 1 else 'rows spread'} more than {rows.group(2)}% over "
+                     f"{'its' if n == 1 else 'their'} repetitions (marked ⚠ below and in BENCH.md)")
+    drift = re.search(r"reference frame's time at (\d+) threads? spread (\d+)%", note)
+    if drift:
+        t = int(drift.group(1))
+        parts.append(f"the reference frame's time at {t} thread{'' if t == 1 else 's'} spread {drift.group(2)}% "
+                     "across the run's checkpoints (results/BENCH.md, Machine steadiness)")
+    if "machine was busy" in note:
+        parts.append("the machine was busy when it started")
+    if not parts:
+        parts.append("see results/BENCH.md")
+    return (" **This run was noisy:** " + "; ".join(parts) + ", so the medians concerned, and conclusions "
+            "drawn from them, are provisional.")
 
 
 def bench_blocks(md, raw, raw_json=None):

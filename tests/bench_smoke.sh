@@ -74,6 +74,20 @@ check "$tmp/large/BENCH.md" '^### Occlusion skipping at a large frame (`omp`, [0
 check "$tmp/large/BENCH.md" '^| flat-64 | [0-9.]* | [0-9.]* | [0-9.]*× | ' "no large-frame row with a ratio"
 check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*× |' "no large-frame geometric mean"
 
+# Machine steadiness (bench/steady.h): the reference frame at checkpoints through the run, at one
+# thread and at every core, each with its median, and the spread per thread count.
+run_bench "$tmp/steady" " on the checkpoints" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
+  --benchmark_filter='^steady/'
+check "$tmp/steady/BENCH.md" '^### Machine steadiness' "no steadiness section in BENCH.md"
+check "$tmp/steady/BENCH.md" '^| 2 | [0-9]* s | [0-9.]* |' "no third checkpoint with a time and a median"
+check "$tmp/steady/BENCH.md" '^| spread | | [0-9.]*% ([0-9.]* – [0-9.]*)' "no spread of the checkpoints"
+check "$tmp/steady/bench.json" '"name": "steady/flat-64/[a-z0-9-]*/1t/32x24/D16/check00' "no first checkpoint in the JSON"
+n=$(grep -c '"run_name": "steady/flat-64/[^"]*/1t/[^"]*/check[0-9]*' "$tmp/steady/bench.json")
+if [ "$n" -lt 9 ]; then # three checkpoints at least, three repetitions each
+  echo "FAIL: only $n single-thread checkpoint repetitions in the JSON"
+  fail=1
+fi
+
 # The submission's spread across its 10 runs (issue 18), on the course's valley when present.
 if [ -d "${RETRO_SHARED:-../shared}/course" ]; then
   run_bench "$tmp/sub" " on the submission cases" --benchmark_filter='^submission/valley/'

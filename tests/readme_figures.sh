@@ -82,4 +82,26 @@ if gen 2>/dev/null; then
   echo "FAIL: per-column counts that disagree with skip-columns.txt were accepted"
   exit 1
 fi
-echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated"
+# The run's noise warning reaches the README whatever it names: one noisy row, a reference frame
+# that drifted across the run's checkpoints with no noisy row, both with a busy machine.
+sh scripts/skip-columns.sh "$retro" "$run" >/dev/null
+note() { # NOTE: the committed BENCH.md with its noise warning replaced by NOTE (none when empty)
+  awk -v n="$1" '/^> \*\*Noisy run\.\*\*/ { if (n != "") print n; next } { print }' results/BENCH.md >"$run/BENCH.md"
+  if [ -n "$1" ] && ! grep -qF -- "$1" "$run/BENCH.md"; then # the run had no warning: add one
+    awk -v n="$1" '{ print } /^The JSON.s `library_build_type/ && !done { print "\n" n; done = 1 }' results/BENCH.md >"$run/BENCH.md"
+  fi
+}
+note "> **Noisy run.** 1 row has a spread over repetitions above 10% (max cv marked ⚠): its medians may be off by as much. Rerun on a quiet machine before drawing conclusions."
+gen && expect "**This run was noisy:** 1 row spreads more than 10% over its repetitions" "one noisy row is not carried into the README"
+note "> **Noisy run.** The reference frame's time at 2 threads spread 57% across the run's checkpoints (Machine steadiness, below): the machine's speed changed during the run, so rows timed at different moments may differ by as much. Rerun on a quiet machine before drawing conclusions."
+gen && expect "**This run was noisy:** the reference frame's time at 2 threads spread 57% across the run's checkpoints" \
+  "a drifting reference frame is not carried into the README"
+note "> **Noisy run.** 3 rows have a spread over repetitions above 10% (max cv marked ⚠): its medians may be off by as much. The reference frame's time at 1 thread spread 12% across the run's checkpoints (Machine steadiness, below): x. The machine was busy when the run started (busy: y). Rerun on a quiet machine before drawing conclusions."
+gen && expect "3 rows spread more than 10% over their repetitions (marked ⚠ below and in BENCH.md); the reference frame's time at 1 thread spread 12% across the run's checkpoints (results/BENCH.md, Machine steadiness); the machine was busy when it started, so" \
+  "rows, drift and a busy start are not all carried into the README"
+note ""
+gen && if grep -qF "This run was noisy" "$tmp/README.md"; then
+  echo "FAIL: a run without a noise warning got one in the README"
+  exit 1
+fi
+echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated; the run's noise warning is carried over"
