@@ -4,6 +4,7 @@
 #include "bench_report.h"
 #include "mesh_cases.h"
 #include "busy.h"
+#include "steady.h"
 #include "sweep_axes.h"
 
 #include <algorithm>
@@ -44,6 +45,12 @@ static std::string noisy_note(const BenchPlan &plan, const RunContext &ctx)
         s += std::string(s.empty() ? "NOISY RUN: " : "; ") + std::to_string(n) +
              " rows spread over " + std::to_string(static_cast<int>(NOISY_CV * 100)) +
              "% (marked noisy)";
+    int t = 0;
+    double drift = steady_drift(plan, &t);
+    if (!std::isnan(drift) && drift > NOISY_DRIFT)
+        s += std::string(s.empty() ? "NOISY RUN: " : "; ") + "the reference frame at " + std::to_string(t) +
+             (t == 1 ? " thread" : " threads") + " drifted " + std::to_string(static_cast<int>(std::lround(100 * drift))) +
+             "% across the run";
     return s;
 }
 
