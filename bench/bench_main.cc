@@ -205,7 +205,7 @@ static void run_case(benchmark::State &st, const BenchCase *c)
                                            Counter::kIsIterationInvariantRate);
 }
 
-// Cases between two checkpoints of the reference frame (steady.h): about a dozen in a full run.
+// Cases between two checkpoints of the reference frame (steady.h): fifteen checkpoints in a full run.
 constexpr int STEADY_EVERY = 30;
 
 static int load_scenes(bench_scene *scenes, const Options &o, BenchPlan *plan)

@@ -7,6 +7,7 @@
 #define RETRO_BENCH_STEADY_H
 
 #include <ostream>
+#include <string>
 
 #include "cases.h"
 
