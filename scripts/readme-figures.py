@@ -85,6 +85,28 @@ def noisy_note(md):
             "drawn from them, are provisional.")
 
 
+def steadiness(md):
+    """The reference frame's spread across the run's checkpoints (BENCH.md, Machine steadiness),
+    per thread count, as a clause for the README's context line; "" for a run without them."""
+    t = tables(md).get("Machine steadiness")
+    if not t:
+        return ""
+    head = t[0]
+    spread = next((r for r in t[1:] if r[0] == "spread"), None)
+    if spread is None:
+        return ""
+    checkpoints = sum(1 for r in t[1:] if r[0].isdigit())
+    parts = []
+    for h, cell in zip(head[2:], spread[2:]):
+        m = re.match(r"([0-9.]+)%", cell)
+        if m:
+            parts.append(f"{m.group(1)}% at {h}")
+    if not parts:
+        return ""
+    return (f"the reference frame's time spread {' and '.join(parts)} across {checkpoints} checkpoints "
+            "(max − min over the median)")
+
+
 def bench_blocks(md, raw, raw_json=None):
     t = tables(md)
     key = next((k for k in t if k.startswith("Mode exact,")), None)
@@ -103,7 +125,7 @@ def bench_blocks(md, raw, raw_json=None):
     # the processor first: the same code's figures differ between machines of the same kind
     cpu = context_field(md, "CPU").split(";")[0]
     about = "; ".join(([f"on {cpu}"] if cpu != "unknown" else []) + [date, f"commit `{commit}`"] +
-                      [x for x in (settings, machine) if x != "unknown"])
+                      [x for x in (settings, machine) if x != "unknown"] + [x for x in (steadiness(md),) if x])
     blocks["bench:context"] = (
         f"Figures in this section come from one `make bench` run ({about}), published by "
         "`make publish`. The full table with every mode "
