@@ -46,8 +46,8 @@ static std::string noisy_note(const BenchPlan &plan, const RunContext &ctx)
              " rows spread over " + std::to_string(static_cast<int>(NOISY_CV * 100)) +
              "% (marked noisy)";
     int t = 0;
-    double drift = steady_drift(plan, &t);
-    if (!std::isnan(drift) && drift > NOISY_DRIFT)
+    double drift = 0;
+    if (steady_noisy(plan, &t, &drift))
         s += std::string(s.empty() ? "NOISY RUN: " : "; ") + "the reference frame at " + std::to_string(t) +
              (t == 1 ? " thread" : " threads") + " drifted " + std::to_string(static_cast<int>(std::lround(100 * drift))) +
              "% across the run";

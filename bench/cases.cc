@@ -34,14 +34,9 @@ std::vector<int> plan_thread_counts(const retro_kernel *k, int cores)
     return t;
 }
 
-void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
-                   retro_mode mode, int w, int h, int d, unsigned group, bool no_skip)
+std::unique_ptr<BenchCase> make_case(const retro_kernel *k, int threads, const bench_scene *s, retro_mode mode, int w,
+                                     int h, int d, unsigned group, bool no_skip)
 {
-    for (auto &have : plan->cases)
-        if (same(*have, k, threads, s, mode, w, h, d, no_skip)) {
-            have->groups |= group;
-            return;
-        }
     auto c = std::make_unique<BenchCase>();
     c->kernel = k;
     c->kernel_index = static_cast<int>(k - retro_kernels);
@@ -56,7 +51,18 @@ void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const be
     c->name = std::string(retro_mode_name(mode)) + "/" + s->name + "/" + k->name + "/" +
               std::to_string(threads) + "t/" + std::to_string(w) + "x" + std::to_string(h) +
               "/D" + std::to_string(d) + (no_skip ? "/noskip" : "");
-    plan->cases.push_back(std::move(c));
+    return c;
+}
+
+void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s,
+                   retro_mode mode, int w, int h, int d, unsigned group, bool no_skip)
+{
+    for (auto &have : plan->cases)
+        if (same(*have, k, threads, s, mode, w, h, d, no_skip)) {
+            have->groups |= group;
+            return;
+        }
+    plan->cases.push_back(make_case(k, threads, s, mode, w, h, d, group, no_skip));
 }
 
 // The case, and with --no-skip its twin without occlusion skipping (mode exact only: the

@@ -98,6 +98,10 @@ std::vector<int> plan_thread_counts(const retro_kernel *k, int cores);
 // Fills plan->cases from the kernel table, the modes, scenes and sweep lists already in plan.
 void plan_cases(BenchPlan *plan);
 
+// A kernel case of group, named mode/scene/kernel/threads/WxH/D[/noskip], not yet in any plan.
+std::unique_ptr<BenchCase> make_case(const retro_kernel *k, int threads, const bench_scene *s, retro_mode mode, int w,
+                                     int h, int d, unsigned group, bool no_skip);
+
 // Adds one kernel case to group (the case itself when planned already: it joins group).
 void plan_add_case(BenchPlan *plan, const retro_kernel *k, int threads, const bench_scene *s, retro_mode mode,
                    int W, int H, int D, unsigned group, bool no_skip);

@@ -21,24 +21,14 @@ static std::vector<int> steady_threads(const retro_kernel *k, int cores)
 
 static std::unique_ptr<BenchCase> checkpoint(const BenchPlan &plan, const retro_kernel *k, int threads, int index)
 {
-    auto c = std::make_unique<BenchCase>();
-    c->kernel = k;
-    c->kernel_index = static_cast<int>(k - retro_kernels);
-    c->threads = threads;
-    c->scene = plan.sweep_scene;
-    c->mode = RETRO_MODE_EXACT;
-    c->W = plan.W;
-    c->H = plan.H;
-    c->D = plan.D;
-    c->groups = GROUP_STEADY;
+    auto c = make_case(k, threads, plan.sweep_scene, RETRO_MODE_EXACT, plan.W, plan.H, plan.D, GROUP_STEADY, false);
     c->checkpoint = index;
     // short: the checkpoints are many and each needs only a steady median
     c->repetitions = 3;
     c->min_time = 0.02;
     char n[16];
-    std::snprintf(n, sizeof n, "%02d", index);
-    c->name = std::string("steady/") + plan.sweep_scene->name + "/" + k->name + "/" + std::to_string(threads) + "t/" +
-              std::to_string(plan.W) + "x" + std::to_string(plan.H) + "/D" + std::to_string(plan.D) + "/check" + n;
+    std::snprintf(n, sizeof n, "/check%02d", index);
+    c->name = "steady/" + c->name.substr(c->name.find('/') + 1) + n; // steady/ in place of exact/
     return c;
 }
 
@@ -74,7 +64,7 @@ static std::map<int, std::vector<const BenchCase *>> checkpoints(const BenchPlan
 }
 
 struct Spread {
-    double min, median, max;
+    double min, median, max, drift; // drift: (max - min) / median
 };
 
 static Spread spread_of(const std::vector<const BenchCase *> &cs)
@@ -83,32 +73,32 @@ static Spread spread_of(const std::vector<const BenchCase *> &cs)
     for (const BenchCase *c : cs)
         t.push_back(c->median_ms);
     std::sort(t.begin(), t.end());
-    return {t.front(), sorted_median(t), t.back()};
+    const double m = sorted_median(t);
+    return {t.front(), m, t.back(), (t.back() - t.front()) / m};
 }
 
-double steady_drift(const BenchPlan &plan, int *threads)
+bool steady_noisy(const BenchPlan &plan, int *threads, double *drift)
 {
     auto by = checkpoints(plan);
-    double worst = std::nan("");
+    double worst = -1;
     for (const auto &[t, cs] : by) {
         if (cs.size() < 3)
-            return std::nan("");
-        Spread s = spread_of(cs);
-        double d = (s.max - s.min) / s.median;
-        if (std::isnan(worst) || d > worst) {
+            return false;
+        const double d = spread_of(cs).drift;
+        if (d > worst) {
             worst = d;
-            if (threads)
-                *threads = t;
+            *threads = t;
         }
     }
-    return worst;
+    *drift = worst;
+    return worst > NOISY_DRIFT;
 }
 
 std::string steady_note(const BenchPlan &plan)
 {
     int t = 0;
-    double d = steady_drift(plan, &t);
-    if (std::isnan(d) || d <= NOISY_DRIFT)
+    double d = 0;
+    if (!steady_noisy(plan, &t, &d))
         return "";
     char b[256];
     std::snprintf(b, sizeof b,
@@ -159,9 +149,9 @@ void steady_table(std::ostream &o, const BenchPlan &plan)
     for (const auto &[t, cs] : by) {
         Spread s = spread_of(cs);
         char b[96];
-        std::snprintf(b, sizeof b, " %.1f%% (%s – %s)", 100 * (s.max - s.min) / s.median,
-                      report_ms_cell(s.min).c_str(), report_ms_cell(s.max).c_str());
-        o << b << ((s.max - s.min) / s.median > NOISY_DRIFT ? " ⚠" : "") << " |";
+        std::snprintf(b, sizeof b, " %.1f%% (%s – %s)", 100 * s.drift, report_ms_cell(s.min).c_str(),
+                      report_ms_cell(s.max).c_str());
+        o << b << (s.drift > NOISY_DRIFT ? " ⚠" : "") << " |";
     }
     o << "\n";
 }

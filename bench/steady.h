@@ -21,9 +21,9 @@ constexpr double NOISY_DRIFT = 0.10;
 // case is planned; nothing without a sweep scene.
 void plan_steady(BenchPlan *plan, int every);
 
-// The largest spread over the thread counts, and the count it belongs to (*threads); NaN when
-// fewer than three checkpoints of every count ran.
-double steady_drift(const BenchPlan &plan, int *threads);
+// Whether the largest spread over the thread counts exceeds NOISY_DRIFT; *threads and *drift
+// get that count and spread. False when fewer than three checkpoints of every count ran.
+bool steady_noisy(const BenchPlan &plan, int *threads, double *drift);
 
 // The sentence for BENCH.md's noisy note ("The reference frame ... drifted ..."), or "" when
 // the drift is within NOISY_DRIFT or unknown.
