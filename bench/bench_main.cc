@@ -23,6 +23,7 @@ extern "C" {
 #include "peer_cases.h"
 #include "pin.h"
 #include "progress_reporter.h"
+#include "retime.h"
 #include "run_context.h"
 #include "skip_large.h"
 #include "steady.h"
@@ -205,8 +206,56 @@ static void run_case(benchmark::State &st, const BenchCase *c)
                                            Counter::kIsIterationInvariantRate);
 }
 
-// Cases between two checkpoints of the reference frame (steady.h): fifteen checkpoints in a full run.
-constexpr int STEADY_EVERY = 30;
+// Cases between two checkpoints of the reference frame (steady.h): the blocks retime.h times
+// again, short enough that the machine seldom changes speed within one; 29 checkpoints in a
+// full run.
+constexpr int STEADY_EVERY = 15;
+
+static void register_case(BenchCase *c, bool quick)
+{
+    auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c);
+    b->Unit(benchmark::kMillisecond);
+    if (c->kernel->flags & RETRO_KF_THREADED)
+        b->UseRealTime(); // CPU time is this thread's alone and misses the workers
+    if (c->groups & GROUP_MESH)
+        b->Iterations(MESH_ITERATIONS)->Repetitions(quick ? MESH_QUICK_REPETITIONS : MESH_REPETITIONS);
+    else if (c->repetitions)
+        b->Repetitions(c->repetitions);
+    if (c->min_time > 0 && !quick)
+        b->MinTime(c->min_time);
+}
+
+// Rounds of retime.h after the first pass, each within what is left of the first pass's
+// duration: a machine slow for good would otherwise keep the run going for ever.
+static void retime(Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
+{
+    const double first = progress->seconds();
+    for (int round = 1; round <= opt.retime; round++) {
+        std::fprintf(stderr, "looking for disturbed blocks (round %d of %d):\n", round, opt.retime);
+        std::vector<int> blocks = r->disturbed(round == 1 ? opt.retime_block : -1);
+        if (blocks.empty()) {
+            std::fprintf(stderr, "  none\n");
+            return;
+        }
+        if (progress->seconds() - first >= first) {
+            std::fprintf(stderr, "  left as they are: re-timing has taken as long as the first pass\n");
+            return;
+        }
+        benchmark::ClearRegisteredBenchmarks();
+        std::vector<BenchCase *> cases = r->take(blocks);
+        for (BenchCase *c : cases) {
+            progress->forget(c);
+            register_case(c, quick);
+        }
+        std::fprintf(stderr, "re-timing %zu cases\n", cases.size());
+        benchmark::RunSpecifiedBenchmarks(progress);
+    }
+    if (opt.retime > 0) {
+        std::fprintf(stderr, "looking for disturbed blocks (after the last round):\n");
+        if (r->disturbed(-1).empty())
+            std::fprintf(stderr, "  none\n");
+    }
+}
 
 static int load_scenes(bench_scene *scenes, const Options &o, BenchPlan *plan)
 {
@@ -235,7 +284,10 @@ int main(int argc, char **argv)
         quick |= !std::strcmp(argv[i], "--quick");
     }
     RunContext ctx;
-    std::vector<char *> args = options_benchmark_args(argc, argv, quick, &ctx);
+    std::vector<char *> args;
+    std::string json;
+    if (!options_benchmark_args(argc, argv, quick, &ctx, &args, &json))
+        return 2;
     int n = static_cast<int>(args.size()) - 1;
     benchmark::Initialize(&n, args.data());
     Options opt;
@@ -275,30 +327,28 @@ int main(int argc, char **argv)
     plan_skip_large(&plan);
     plan_mesh(&plan, quick);
     plan_steady(&plan, STEADY_EVERY);
-    for (const auto &c : plan.cases) {
-        auto *b = benchmark::RegisterBenchmark(c->name.c_str(), run_case, c.get());
-        b->Unit(benchmark::kMillisecond);
-        if (c->kernel->flags & RETRO_KF_THREADED)
-            b->UseRealTime(); // CPU time is this thread's alone and misses the workers
-        if (c->groups & GROUP_MESH)
-            b->Iterations(MESH_ITERATIONS)->Repetitions(quick ? MESH_QUICK_REPETITIONS : MESH_REPETITIONS);
-        else if (c->repetitions)
-            b->Repetitions(c->repetitions);
-        if (c->min_time > 0 && !quick)
-            b->MinTime(c->min_time);
-    }
+    for (const auto &c : plan.cases)
+        register_case(c.get(), quick);
 
     context_publish(ctx);
     ProgressReporter progress(&plan);
     size_t ran = benchmark::RunSpecifiedBenchmarks(&progress);
+    Retimer retimer(&plan);
+    if (ran)
+        retime(&retimer, &progress, opt, quick);
     retro_ctx_free(live.rc);
     live.rc = nullptr;
-    benchmark::Shutdown();
     int status = ran ? 0 : 1;
+    // before Shutdown(), which frees the custom context the JSON's header reads
+    if (progress.cases_done() > 0 && !json.empty() && !progress.write_json(json))
+        status = 1;
+    benchmark::Shutdown();
     if (progress.cases_done() > 0) { // none with --benchmark_list_tests
-        std::fprintf(stderr, "%d cases in %.0f s\n", progress.cases_done(), progress.seconds());
+        const int cases = static_cast<int>(
+            std::count_if(plan.cases.begin(), plan.cases.end(), [](const auto &c) { return c->ran; }));
+        std::fprintf(stderr, "%d cases in %.0f s\n", cases, progress.seconds());
         if (!opt.report_dir.empty() && !write_bench_md(opt.report_dir + "/BENCH.md", plan, ctx,
-                                                       progress.seconds(), progress.cases_done()))
+                                                       progress.seconds(), cases, retimer.summary()))
             status = 1;
         if (!opt.charts.empty() && !write_charts_gp(opt.charts, plan, ctx))
             status = 1;

@@ -117,7 +117,7 @@ static void sweep_table(std::ostream &o, const BenchPlan &plan, unsigned group,
 }
 
 static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx,
-                   double seconds, int cases_run)
+                   double seconds, int cases_run, const std::string &retimed)
 {
     o << "# retro benchmark\n\n| | |\n|---|---|\n"
       << "| CPU | " << ctx.cpu_model << "; " << ctx.cores << " cores, " << ctx.pus
@@ -158,6 +158,8 @@ static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx
          "the harness, built with " << ctx.cxx << " at the harness's -O level, and each "
          "iteration calls retro_render() in libretro, built with the C flags above. The "
          "library's own asserts run only between timed loops.\n";
+    if (!retimed.empty())
+        o << "\n" << retimed << "\n";
     int noisy = report_noisy_rows(plan);
     std::string drift = steady_note(plan);
     bool flag = ctx.busy || noisy || !drift.empty();
@@ -176,10 +178,10 @@ static void header(std::ostream &o, const BenchPlan &plan, const RunContext &ctx
 }
 
 bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunContext &ctx,
-                    double seconds, int cases_run)
+                    double seconds, int cases_run, const std::string &retimed)
 {
     std::ostringstream o;
-    header(o, plan, ctx, seconds, cases_run);
+    header(o, plan, ctx, seconds, cases_run, retimed);
     for (retro_mode mode : plan.modes)
         matrix_table(o, plan, mode);
     if (plan.sweep_scene) {

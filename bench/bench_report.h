@@ -51,8 +51,9 @@ bool report_row_noisy(const BenchPlan &plan, const ReportRow &row);
 std::string report_label(const ReportRow &row);
 
 // Write the files; return false and print why on stderr when a file cannot be written.
+// retimed: retime.h's sentence on what was timed again, or "".
 bool write_bench_md(const std::string &path, const BenchPlan &plan, const RunContext &ctx,
-                    double seconds, int cases_run);
+                    double seconds, int cases_run, const std::string &retimed);
 bool write_charts_gp(const std::string &path, const BenchPlan &plan, const RunContext &ctx);
 
 #endif

@@ -23,6 +23,10 @@ void options_usage()
         "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n"
         "  --no-skip       time every mode exact case also with occlusion skipping off\n"
         "                  (docs/SKIPPING.md), as a twin named .../noskip\n"
+        "  --retime=N      up to N rounds timing again the blocks of cases a slow checkpoint or\n"
+        "                  a spread case shows disturbed (default 3; 0 with --quick), within the\n"
+        "                  first pass's duration\n"
+        "  --retime-block=I  re-time block I in the first round whatever its timings (a test)\n"
         "\n"
         "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
         "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"
@@ -31,7 +35,8 @@ void options_usage()
         "10 repetitions whatever --benchmark_repetitions says, for its spread.\n"
         "Every --benchmark_* flag of google-benchmark works; given flags override the\n"
         "defaults --benchmark_repetitions=5 --benchmark_min_time=0.05\n"
-        "--benchmark_min_warmup_time=0.05 (quick: 3, 0.01, 0).\n");
+        "--benchmark_min_warmup_time=0.05 (quick: 3, 0.01, 0). --benchmark_out=FILE\n"
+        "writes the JSON of each case's last timing at the end (json is the only format).\n");
 }
 
 // The last value given for --NAME=, or def.
@@ -44,7 +49,8 @@ static std::string flag_value(const std::vector<char *> &args, const char *name,
     return v;
 }
 
-std::vector<char *> options_benchmark_args(int argc, char **argv, bool quick, RunContext *ctx)
+bool options_benchmark_args(int argc, char **argv, bool quick, RunContext *ctx, std::vector<char *> *out,
+                            std::string *json)
 {
     // Warm-up is the global flag: this google-benchmark (1.7) ignores ->MinWarmUpTime()
     // unless ->MinTime() is set too, which would in turn override --benchmark_min_time.
@@ -54,13 +60,26 @@ std::vector<char *> options_benchmark_args(int argc, char **argv, bool quick, Ru
     static char wu[] = "--benchmark_min_warmup_time=0.05";
     static char qwu[] = "--benchmark_min_warmup_time=0";
     std::vector<char *> args{argv[0], quick ? qreps : reps, quick ? qmt : mt, quick ? qwu : wu};
-    args.insert(args.end(), argv + 1, argv + argc);
+    static const char out_key[] = "--benchmark_out=", format_key[] = "--benchmark_out_format=";
+    std::string format = "json";
+    for (int i = 1; i < argc; i++)
+        if (!std::strncmp(argv[i], out_key, sizeof out_key - 1))
+            *json = argv[i] + sizeof out_key - 1;
+        else if (!std::strncmp(argv[i], format_key, sizeof format_key - 1))
+            format = argv[i] + sizeof format_key - 1;
+        else
+            args.push_back(argv[i]);
+    if (format != "json") {
+        std::fprintf(stderr, "retro-bench: --benchmark_out_format=%s: only json is written\n", format.c_str());
+        return false;
+    }
     ctx->repetitions = std::atoi(flag_value(args, "benchmark_repetitions", "1").c_str());
     ctx->min_time = flag_value(args, "benchmark_min_time", "");
     ctx->warmup = flag_value(args, "benchmark_min_warmup_time", "");
     ctx->filter = flag_value(args, "benchmark_filter", "");
     args.push_back(nullptr);
-    return args;
+    *out = args;
+    return true;
 }
 
 // Every mode of the API unless --modes names some, so new modes are timed unasked.
@@ -98,6 +117,7 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
     std::string modes;
     for (int i = 1; i < n; i++) {
         std::string a = args[i], v;
+        char junk;
         bool ok = option(a, "--report=", &o->report_dir) || option(a, "--charts=", &o->charts) ||
                   option(a, "--scene=", &o->scene) || option(a, "--modes=", &modes);
         if (a == "--quick")
@@ -111,11 +131,17 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
                  plan->H > 0;
         else if (!ok && option(a, "--distance=", &v))
             ok = std::sscanf(v.c_str(), "%d", &plan->D) == 1;
+        else if (!ok && option(a, "--retime=", &v))
+            ok = std::sscanf(v.c_str(), "%d%c", &o->retime, &junk) == 1 && o->retime >= 0;
+        else if (!ok && option(a, "--retime-block=", &v))
+            ok = std::sscanf(v.c_str(), "%d%c", &o->retime_block, &junk) == 1 && o->retime_block >= 0;
         if (!ok) {
             std::fprintf(stderr, "retro-bench: unknown or bad argument '%s' (--help)\n", args[i]);
             return false;
         }
     }
+    if (o->retime < 0)
+        o->retime = o->quick ? 0 : 3;
     if (o->quick) {
         plan->resolutions = {{320, 240}, {640, 480}, {1920, 1080}};
         plan->distances = {100, 800, 3000};

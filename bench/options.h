@@ -15,13 +15,18 @@ struct Options {
     std::string charts;     // --charts: the gnuplot script of the charts
     std::string scene;      // --scene: one map prefix instead of the default scenes
     bool no_extras = false; // --no-extras: leave out the submission and effect tables
+    int retime = -1;        // --retime: rounds of re-timing disturbed blocks (retime.h); -1: 3, quick 0
+    int retime_block = -1;  // --retime-block: a block the first round re-times whatever its timings
 };
 
 void options_usage();
 
 // google-benchmark's argv (null-terminated): argv[0], the defaults, then argv[1..], so that
-// flags given on the command line win. Records the settings in effect in ctx.
-std::vector<char *> options_benchmark_args(int argc, char **argv, bool quick, RunContext *ctx);
+// flags given on the command line win. Records the settings in effect in ctx. The JSON output
+// is ours (progress_reporter.h): --benchmark_out's path goes to *json instead, and false
+// (after a message) means a --benchmark_out_format other than json.
+bool options_benchmark_args(int argc, char **argv, bool quick, RunContext *ctx, std::vector<char *> *args,
+                            std::string *json);
 
 // Parses what google-benchmark left in args[1..n-1] into o and plan (screen, distance, modes,
 // sweep points). Returns false after a message on stderr.

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <vector>
+
+#include "bench_report.h"
 
 static const char *const kMsCounter = "ms/frame";
 
-ProgressReporter::ProgressReporter(BenchPlan *plan) : start_(std::chrono::steady_clock::now())
+ProgressReporter::ProgressReporter(BenchPlan *plan) : plan_(plan), start_(std::chrono::steady_clock::now())
 {
     for (auto &c : plan->cases)
         by_name_[c->name] = c.get();
@@ -20,9 +23,12 @@ double ProgressReporter::seconds() const
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+// Every pass over the cases starts with a context; the run's clock starts at the first.
 bool ProgressReporter::ReportContext(const Context &)
 {
-    start_ = std::chrono::steady_clock::now();
+    if (!started_)
+        start_ = std::chrono::steady_clock::now();
+    started_ = true;
     return true;
 }
 
@@ -42,6 +48,10 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     if (it == by_name_.end())
         return;
     BenchCase *c = it->second;
+    std::vector<Run> kept = runs;
+    for (Run &r : kept) // they point into the pass's benchmark instances, gone after it
+        r.statistics = nullptr;
+    runs_[c].push_back(std::move(kept));
     // A case arrives in two calls, its repetitions then their aggregates; the second call
     // is skipped when there are no aggregates (one repetition, or every one failed) and,
     // with --benchmark_display_aggregates_only, the first is.
@@ -85,4 +95,23 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     else
         std::fprintf(stderr, "[%3d] %6.1fs  %-46s %9.3f ms/frame  cv %4.1f%%\n", done_,
                      seconds(), c->name.c_str(), c->median_ms, 100 * c->cv);
+}
+
+bool ProgressReporter::write_json(const std::string &path) const
+{
+    std::ostringstream text, errors;
+    benchmark::JSONReporter json;
+    json.SetOutputStream(&text);
+    json.SetErrorStream(&errors);
+    json.ReportContext(Context());
+    for (const auto &c : plan_->cases) {
+        auto it = runs_.find(c.get());
+        if (it != runs_.end())
+            for (const auto &batch : it->second)
+                json.ReportRuns(batch);
+    }
+    json.Finalize();
+    if (!errors.str().empty())
+        std::fprintf(stderr, "%s", errors.str().c_str());
+    return report_write_file(path, text.str());
 }

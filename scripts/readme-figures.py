@@ -107,6 +107,23 @@ def steadiness(md):
             "(max − min over the median)")
 
 
+def retimed(md):
+    """How many blocks of cases the run timed again (BENCH.md's "Re-timed" paragraph, bench/retime.h)
+    and how many stayed disturbed, as a clause for the README's context line; "" when none were."""
+    m = re.search(r"^Re-timed, (.*)$", md, re.M)
+    if not m:
+        return ""
+    rounds = re.findall(r"(\d+) blocks? \((\d+) cases with their checkpoints\) in round \d+", m.group(1))
+    total = re.search(r"of the run's (\d+) blocks", m.group(1))
+    if not rounds or not total:
+        return ""
+    first = int(rounds[0][0])
+    clause = (f"{first} of its {total.group(1)} blocks of cases timed again after a slow checkpoint or a spread case"
+              + (f", in {len(rounds)} rounds" if len(rounds) > 1 else ""))
+    left = re.search(r"Still disturbed when re-timing stopped: (\d+) blocks?", m.group(1))
+    return clause + (f", {left.group(1)} still disturbed at the end" if left else "")
+
+
 def bench_blocks(md, raw, raw_json=None):
     t = tables(md)
     key = next((k for k in t if k.startswith("Mode exact,")), None)
@@ -125,7 +142,7 @@ def bench_blocks(md, raw, raw_json=None):
     # the processor first: the same code's figures differ between machines of the same kind
     cpu = context_field(md, "CPU").split(";")[0]
     about = "; ".join(([f"on {cpu}"] if cpu != "unknown" else []) + [date, f"commit `{commit}`"] +
-                      [x for x in (settings, machine) if x != "unknown"] + [x for x in (steadiness(md),) if x])
+                      [x for x in (settings, machine) if x != "unknown"] + [x for x in (steadiness(md), retimed(md)) if x])
     blocks["bench:context"] = (
         f"Figures in this section come from one `make bench` run ({about}), published by "
         "`make publish`. The full table with every mode "

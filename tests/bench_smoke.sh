@@ -16,12 +16,13 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # run_bench DIR WHAT ARGS...: one short repetition of the cases ARGS select, the report and
-# DIR/bench.json in DIR, or the test fails with retro-bench's output
+# DIR/bench.json in DIR, or the test fails with retro-bench's output. No re-timing unless ARGS
+# ask for it (--retime=N comes later and wins), so that these runs do the same on any machine.
 run_bench() {
   dir=$1 what=$2
   shift 2
   mkdir -p "$dir"
-  if ! "$bench" "$@" --benchmark_repetitions=1 --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 \
+  if ! "$bench" --retime=0 "$@" --benchmark_repetitions=1 --benchmark_min_time=0.001 --benchmark_min_warmup_time=0 \
     --report="$dir" --benchmark_out="$dir/bench.json" --benchmark_out_format=json >"$dir/out" 2>&1; then
     echo "FAIL: retro-bench exited with an error$what:"
     cat "$dir/out"
@@ -87,6 +88,30 @@ if [ "$n" -lt 9 ]; then # three checkpoints at least, three repetitions each
   echo "FAIL: only $n single-thread checkpoint repetitions in the JSON"
   fail=1
 fi
+
+# Re-timing (bench/retime.h): block 0, asked for, is timed again with its checkpoints; the JSON
+# keeps only the last timing of each case and BENCH.md says what was re-timed.
+run_bench "$tmp/retime" " when re-timing" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
+  --benchmark_filter='^steady/' --retime=1 --retime-block=0
+check "$tmp/retime/out" '^  block 0: asked for (--retime-block)$' "block 0 was not re-timed when asked"
+check "$tmp/retime/out" '^re-timing [1-9][0-9]* cases$' "no re-timing pass"
+# (the form scripts/readme-figures.py reads)
+check "$tmp/retime/BENCH.md" "^Re-timed, of the run's [1-9][0-9]* blocks of cases (.*): [1-9][0-9]* blocks\\{0,1\\} ([1-9][0-9]* cases with their checkpoints) in round 1\\." \
+  "BENCH.md does not say what was re-timed"
+n=$(grep -c '"name": "steady/flat-64/[^"]*/1t/[^"]*/check00[^"]*_median"' "$tmp/retime/bench.json")
+if [ "$n" != 1 ]; then
+  echo "FAIL: checkpoint 0 has $n medians in the JSON after its re-timing, not 1"
+  fail=1
+fi
+for bad in --retime=x --retime=-1 --benchmark_out_format=csv; do
+  "$bench" "$bad" >"$tmp/bad.out" 2>&1
+  rc=$?
+  if [ "$rc" != 2 ] || [ "$(wc -l <"$tmp/bad.out")" != 1 ]; then
+    echo "FAIL: retro-bench $bad exited $rc with $(wc -l <"$tmp/bad.out") lines, not 2 with one:"
+    cat "$tmp/bad.out"
+    fail=1
+  fi
+done
 
 # The submission's spread across its 10 runs (issue 18), on the course's valley when present.
 if [ -d "${RETRO_SHARED:-../shared}/course" ]; then

@@ -1,0 +1,45 @@
+// Re-timing the disturbed blocks of a run. The checkpoints (steady.h) cut the run into blocks of
+// cases. On a shared machine the speed changes for seconds at a time, most of all at two threads;
+// a block timed while it was slow shows it at the checkpoints beside it, or in a case's spread.
+// Such a block is timed again, with its checkpoints, so that every table can come from cases
+// timed while the machine ran at its usual speed; BENCH.md says which blocks were re-timed, and
+// a block still disturbed after the last round stays marked noisy as before.
+#ifndef RETRO_BENCH_RETIME_H
+#define RETRO_BENCH_RETIME_H
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cases.h"
+
+class Retimer {
+  public:
+    explicit Retimer(BenchPlan *plan) : plan_(plan) {}
+
+    // The blocks to time again, in order: a checkpoint at either end ran more than NOISY_DRIFT
+    // slower than the fastest timing of its thread count so far, or a case in it spread more
+    // than NOISY_CV; and block `forced` (>= 0: tests the re-timing). Block i holds the cases
+    // between checkpoint i and checkpoint i + 1. Says why on stderr, one line per block.
+    std::vector<int> disturbed(int forced);
+
+    // The cases of those blocks, each with the checkpoints at its ends, in plan order, their
+    // results cleared for the new timing; the round is recorded for the report.
+    std::vector<BenchCase *> take(const std::vector<int> &blocks);
+
+    int rounds() const { return static_cast<int>(rounds_.size()); }
+
+    // BENCH.md's sentence on the re-timing ("" when nothing was re-timed), and blocks still
+    // disturbed after the last round.
+    std::string summary() const;
+
+  private:
+    BenchPlan *plan_;
+    std::map<int, double> fastest_;              // threads -> fastest checkpoint timing so far
+    std::vector<std::vector<int>> rounds_;       // the blocks of each round
+    std::vector<int> cases_;                     // cases re-timed in each round (checkpoints included)
+    std::vector<int> left_;                      // blocks disturbed at the last look, not re-timed
+    int blocks_ = 0;                             // blocks in the run
+};
+
+#endif
