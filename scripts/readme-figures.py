@@ -124,6 +124,29 @@ def retimed(md):
     return clause + (f", {left.group(1)} still disturbed at the end" if left else "")
 
 
+def since_block(md, repo):
+    """Whether the kernels changed after the published run: the commits since the run's commit that
+    touch src/ or include/, from git in repo. None when git cannot say (no repository, or the run's
+    commit is not in it): the README's block is then left as it is and not checked."""
+    import subprocess
+    commit = context_field(md, "commit")
+    if not re.fullmatch(r"[0-9a-f]{7,40}", commit):
+        return None
+    try:
+        log = subprocess.run(["git", "-C", repo, "log", "--format=%h", f"{commit}..HEAD", "--", "src", "include"],
+                             capture_output=True, text=True, check=True).stdout.splitlines()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    if not log:
+        return f"The kernel sources (`src/`, `include/`) are those of the run's commit `{commit[:7]}`."
+    hashes = list(reversed(log))
+    n = len(hashes)
+    shown = ", ".join(f"`{h}`" for h in hashes[:6]) + (", …" if n > 6 else "")
+    return (f"**The kernels changed after this run:** {n} commit{'' if n == 1 else 's'} since `{commit[:7]}` "
+            f"touch{'es' if n == 1 else ''} `src/` or `include/` ({shown}). The figures here are those of the "
+            "run's commit until a steady run of the new code is published.")
+
+
 def bench_blocks(md, raw, raw_json=None):
     t = tables(md)
     key = next((k for k in t if k.startswith("Mode exact,")), None)
@@ -455,6 +478,12 @@ def main(argv):
     raw = os.path.exists(f"{results}/bench.json")
     blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(), raw,
                           json.load(open(f"{results}/bench.json", encoding="utf-8")) if raw else None)
+    since = since_block(open(f"{results}/BENCH.md", encoding="utf-8").read(), os.path.dirname(os.path.abspath(path)))
+    if since is not None:
+        blocks["bench:since"] = since
+    else:
+        print("note: git cannot say whether the kernels changed after the published run: "
+              "README's bench:since block is not checked")
     columns = readme_skipping.skip_columns_block(results)
     if columns:
         blocks["bench:skip-columns"] = columns

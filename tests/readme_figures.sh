@@ -120,4 +120,31 @@ awk '{ print } /^The JSON.s `library_build_type/ && !done { print "\nRe-timed, o
   "$run/BENCH.md" >"$run/b.tmp" && mv "$run/b.tmp" "$run/BENCH.md"
 gen && expect "4 of its 30 blocks of cases timed again after a slow checkpoint or a spread case, in 2 rounds, 1 still disturbed at the end" \
   "the re-timing is not quoted in the README"
-echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over"
+# Whether the kernels changed after the published run (bench:since), from git: in a repository of
+# its own, one commit after the run's touching src/ is named; one touching docs/ only is not.
+repo="$tmp/repo"
+mkdir -p "$repo/src" "$repo/docs" "$repo/results"
+git -C "$repo" init -q && git -C "$repo" config user.email t@t && git -C "$repo" config user.name t
+echo a >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm run
+ran=$(git -C "$repo" rev-parse --short=12 HEAD)
+echo b >"$repo/docs/d.md" && git -C "$repo" add -A && git -C "$repo" commit -qm docs
+cp -r "$run/." "$repo/results/"
+sed "s/^| commit | .* |\$/| commit | $ran |/" "$run/BENCH.md" >"$repo/results/BENCH.md"
+cp README.md "$repo/README.md"
+python3 scripts/readme-figures.py "$repo/results" "$repo/README.md" >/dev/null
+grep -qF "The kernel sources (\`src/\`, \`include/\`) are those of the run's commit \`$(echo "$ran" | cut -c1-7)\`." "$repo/README.md" ||
+  { echo "FAIL: a commit touching docs/ only is taken for a kernel change"; exit 1; }
+echo c >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm kernel
+python3 scripts/readme-figures.py "$repo/results" "$repo/README.md" >/dev/null
+grep -qF "**The kernels changed after this run:** 1 commit since \`$(echo "$ran" | cut -c1-7)\` touches \`src/\` or \`include/\` (\`$(git -C "$repo" rev-parse --short HEAD)\`)" "$repo/README.md" ||
+  { echo "FAIL: a kernel commit after the run is not named in the README"; exit 1; }
+if python3 scripts/readme-figures.py --check "$repo/results" "$repo/README.md" >/dev/null; then
+  : # regenerated above: it matches
+else
+  echo "FAIL: the regenerated README does not match its run"; exit 1
+fi
+echo d >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm kernel2
+if python3 scripts/readme-figures.py --check "$repo/results" "$repo/README.md" >/dev/null; then
+  echo "FAIL: a README that misses a kernel commit after its run passes the check"; exit 1
+fi
+echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run are named"
