@@ -225,8 +225,9 @@ static void register_case(BenchCase *c, bool quick)
         b->MinTime(c->min_time);
 }
 
-// Rounds of retime.h after the first pass, each within what is left of the first pass's
-// duration: a machine slow for good would otherwise keep the run going for ever.
+// Rounds of retime.h after the first pass, while the re-timing so far and the round's estimate
+// (its share of the cases, of the first pass's duration) fit in the first pass's duration: a
+// machine slow for good would otherwise keep the run going for ever.
 static void retime(Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
 {
     const double first = progress->seconds();
@@ -237,8 +238,8 @@ static void retime(Retimer *r, ProgressReporter *progress, const Options &opt, b
             std::fprintf(stderr, "  none\n");
             return;
         }
-        if (progress->seconds() - first >= first) {
-            std::fprintf(stderr, "  left as they are: re-timing has taken as long as the first pass\n");
+        if (progress->seconds() - first + r->share(blocks) * first > first) {
+            std::fprintf(stderr, "  left as they are: re-timing them would take longer than the first pass\n");
             return;
         }
         benchmark::ClearRegisteredBenchmarks();

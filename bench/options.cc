@@ -26,7 +26,7 @@ void options_usage()
         "  --retime=N      up to N rounds timing again the blocks of cases a slow checkpoint or\n"
         "                  a spread case shows disturbed (default 3; 0 with --quick), within the\n"
         "                  first pass's duration\n"
-        "  --retime-block=I  re-time block I in the first round whatever its timings (a test)\n"
+        "  --retime-block=I  the first round re-times block I alone, whatever the timings (a test)\n"
         "\n"
         "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
         "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"

@@ -16,7 +16,7 @@ struct Options {
     std::string scene;      // --scene: one map prefix instead of the default scenes
     bool no_extras = false; // --no-extras: leave out the submission and effect tables
     int retime = -1;        // --retime: rounds of re-timing disturbed blocks (retime.h); -1: 3, quick 0
-    int retime_block = -1;  // --retime-block: a block the first round re-times whatever its timings
+    int retime_block = -1;  // --retime-block: the block the first round re-times alone (a test)
 };
 
 void options_usage();

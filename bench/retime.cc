@@ -47,8 +47,8 @@ std::vector<int> Retimer::disturbed(int forced)
             why[block] = b;
         }
     }
-    if (forced >= 0 && forced < last)
-        why[forced] = "asked for (--retime-block)";
+    if (forced >= 0 && forced < last) // a test: that block alone, whatever the timings say
+        why = {{forced, "asked for (--retime-block)"}};
     blocks_ = std::max(last, 0);
     std::vector<int> blocks;
     for (const auto &[k, reason] : why)
@@ -60,7 +60,8 @@ std::vector<int> Retimer::disturbed(int forced)
     return blocks;
 }
 
-std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
+// The cases that ran in those blocks, with the checkpoints at their ends, in plan order.
+std::vector<BenchCase *> Retimer::cases_of(const std::vector<int> &blocks) const
 {
     const std::set<int> want(blocks.begin(), blocks.end());
     std::vector<BenchCase *> cases;
@@ -72,13 +73,27 @@ std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
             in = want.count(block) || want.count(block - 1);
         } else
             in = block >= 0 && want.count(block);
-        if (!in || !c->ran)
-            continue;
+        if (in && c->ran)
+            cases.push_back(c.get());
+    }
+    return cases;
+}
+
+double Retimer::share(const std::vector<int> &blocks) const
+{
+    const size_t ran = static_cast<size_t>(
+        std::count_if(plan_->cases.begin(), plan_->cases.end(), [](const auto &c) { return c->ran; }));
+    return ran ? static_cast<double>(cases_of(blocks).size()) / static_cast<double>(ran) : 0;
+}
+
+std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
+{
+    std::vector<BenchCase *> cases = cases_of(blocks);
+    for (BenchCase *c : cases) {
         c->ran = false;
         c->median_ms = c->cv = c->rep_min = c->rep_max = c->done_at = std::nan("");
         c->reps = 0;
         c->error.clear();
-        cases.push_back(c.get());
     }
     rounds_.push_back(blocks);
     cases_.push_back(static_cast<int>(cases.size()));

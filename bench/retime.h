@@ -19,13 +19,17 @@ class Retimer {
 
     // The blocks to time again, in order: a checkpoint at either end ran more than NOISY_DRIFT
     // slower than the fastest timing of its thread count so far, or a case in it spread more
-    // than NOISY_CV; and block `forced` (>= 0: tests the re-timing). Block i holds the cases
+    // than NOISY_CV; or block `forced` alone (>= 0: tests the re-timing). Block i holds the cases
     // between checkpoint i and checkpoint i + 1. Says why on stderr, one line per block.
     std::vector<int> disturbed(int forced);
 
     // The cases of those blocks, each with the checkpoints at its ends, in plan order, their
     // results cleared for the new timing; the round is recorded for the report.
     std::vector<BenchCase *> take(const std::vector<int> &blocks);
+
+    // The share of the cases that ran which re-timing those blocks would time again: an
+    // estimate of the round's duration as a share of the first pass's.
+    double share(const std::vector<int> &blocks) const;
 
     int rounds() const { return static_cast<int>(rounds_.size()); }
 
@@ -34,6 +38,8 @@ class Retimer {
     std::string summary() const;
 
   private:
+    std::vector<BenchCase *> cases_of(const std::vector<int> &blocks) const;
+
     BenchPlan *plan_;
     std::map<int, double> fastest_;              // threads -> fastest checkpoint timing so far
     std::vector<std::vector<int>> rounds_;       // the blocks of each round
