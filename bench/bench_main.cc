@@ -345,8 +345,7 @@ int main(int argc, char **argv)
         status = 1;
     benchmark::Shutdown();
     if (progress.cases_done() > 0) { // none with --benchmark_list_tests
-        const int cases = static_cast<int>(
-            std::count_if(plan.cases.begin(), plan.cases.end(), [](const auto &c) { return c->ran; }));
+        const int cases = plan_cases_ran(plan);
         std::fprintf(stderr, "%d cases in %.0f s\n", cases, progress.seconds());
         if (!opt.report_dir.empty() && !write_bench_md(opt.report_dir + "/BENCH.md", plan, ctx,
                                                        progress.seconds(), cases, retimer.summary()))

@@ -3,6 +3,7 @@
 #ifndef RETRO_BENCH_CASES_H
 #define RETRO_BENCH_CASES_H
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -91,6 +92,21 @@ struct BenchPlan {
     const BenchCase *find(const retro_kernel *k, int threads, const bench_scene *s,
                           retro_mode mode, int W, int H, int D, bool no_skip = false) const;
 };
+
+// Whether the case ran and has a median (not skipped); c may be null.
+inline bool case_timed(const BenchCase *c)
+{
+    return c && c->ran && c->error.empty() && !std::isnan(c->median_ms);
+}
+
+// How many of the plan's cases ran (skipped ones included).
+inline int plan_cases_ran(const BenchPlan &plan)
+{
+    int n = 0;
+    for (const auto &c : plan.cases)
+        n += c->ran;
+    return n;
+}
 
 // Thread counts a kernel is timed at: 1 unless threaded, else 1, 2, 4 ... and cores.
 std::vector<int> plan_thread_counts(const retro_kernel *k, int cores);

@@ -13,11 +13,6 @@
 
 static const double NaN = std::nan("");
 
-static bool mesh_ok(const BenchCase *c)
-{
-    return c && c->ran && c->error.empty() && !std::isnan(c->median_ms);
-}
-
 // The mesh case of kernel k at threads on scene s and frame (w, h, d), or nullptr.
 static const BenchCase *mesh_find(const BenchPlan &plan, const retro_kernel *k, int threads, const bench_scene *s,
                                   int w, int h, int d)
@@ -35,7 +30,7 @@ static const BenchCase *best_voxel(const BenchPlan &plan, const bench_scene *s)
     const BenchCase *best = nullptr;
     for (const auto &c : plan.cases)
         if ((c->groups & GROUP_MATRIX) && c->scene == s && c->mode == RETRO_MODE_EXACT && c->W == plan.W &&
-            c->H == plan.H && c->D == plan.D && mesh_ok(c.get()) && (!best || c->median_ms < best->median_ms))
+            c->H == plan.H && c->D == plan.D && case_timed(c.get()) && (!best || c->median_ms < best->median_ms))
             best = c.get();
     return best;
 }
@@ -76,7 +71,7 @@ static double mesh_geomean(const BenchPlan &plan, const retro_kernel *k, int thr
         const BenchCase *c = mesh_find(plan, k, threads, s, plan.W, plan.H, plan.D);
         if (!c)
             continue;
-        if (!mesh_ok(c))
+        if (!case_timed(c))
             return NaN;
         log_sum += std::log(c->median_ms);
         n++;
@@ -107,7 +102,7 @@ static void per_scene(std::ostream &o, const BenchPlan &plan)
     for (const auto &c : plan.cases) {
         if (!(c->groups & GROUP_MESH) || !c->ran || c->W != plan.W || c->H != plan.H || c->D != plan.D)
             continue;
-        bool ok = mesh_ok(c.get());
+        bool ok = case_timed(c.get());
         double per_s = ok ? 1e3 / c->median_ms : NaN;
         const BenchCase *v = best_voxel(plan, c->scene);
         char ratio[96] = "–", cv[32] = "–";
@@ -166,7 +161,7 @@ static std::vector<SweepRow> sweep_data(const BenchPlan &plan, unsigned voxel_gr
                    false, {}};
         for (const auto &p : points) {
             const BenchCase *c = mesh_find(plan, k, t, plan.sweep_scene, p[0], p[1], p[2]);
-            r.ms.push_back(mesh_ok(c) ? c->median_ms : NaN);
+            r.ms.push_back(case_timed(c) ? c->median_ms : NaN);
         }
         out.push_back(r);
     }
@@ -180,7 +175,7 @@ static std::vector<SweepRow> sweep_data(const BenchPlan &plan, unsigned voxel_gr
                {}};
     for (const auto &p : points) {
         const BenchCase *c = plan.find(vk, vt, plan.sweep_scene, RETRO_MODE_EXACT, p[0], p[1], p[2]);
-        r.ms.push_back(c && (c->groups & voxel_group) && mesh_ok(c) ? c->median_ms : NaN);
+        r.ms.push_back(c && (c->groups & voxel_group) && case_timed(c) ? c->median_ms : NaN);
     }
     out.push_back(r);
     return out;

@@ -9,15 +9,10 @@
 #include "busy.h"
 #include "steady.h"
 
-static bool timed(const BenchCase *c)
-{
-    return c->ran && c->error.empty() && !std::isnan(c->median_ms);
-}
-
 std::vector<int> Retimer::disturbed(int forced)
 {
     for (const auto &c : plan_->cases)
-        if ((c->groups & GROUP_STEADY) && timed(c.get())) {
+        if ((c->groups & GROUP_STEADY) && case_timed(c.get())) {
             auto it = fastest_.find(c->threads);
             if (it == fastest_.end() || c->median_ms < it->second)
                 fastest_[c->threads] = c->median_ms;
@@ -30,7 +25,7 @@ std::vector<int> Retimer::disturbed(int forced)
         if (c->groups & GROUP_STEADY) {
             block = c->checkpoint;
             last = std::max(last, block);
-            if (!timed(c.get()))
+            if (!case_timed(c.get()))
                 continue;
             const double best = fastest_[c->threads];
             if (c->median_ms <= best * (1 + NOISY_DRIFT))
@@ -42,7 +37,7 @@ std::vector<int> Retimer::disturbed(int forced)
             for (int k : {block - 1, block})
                 if (k >= 0 && !why.count(k))
                     why[k] = b;
-        } else if (block >= 0 && timed(c.get()) && c->cv > NOISY_CV && !why.count(block)) {
+        } else if (block >= 0 && case_timed(c.get()) && c->cv > NOISY_CV && !why.count(block)) {
             std::snprintf(b, sizeof b, "%s spread %.0f%% over its repetitions", c->name.c_str(), 100 * c->cv);
             why[block] = b;
         }
@@ -81,9 +76,8 @@ std::vector<BenchCase *> Retimer::cases_of(const std::vector<int> &blocks) const
 
 double Retimer::share(const std::vector<int> &blocks) const
 {
-    const size_t ran = static_cast<size_t>(
-        std::count_if(plan_->cases.begin(), plan_->cases.end(), [](const auto &c) { return c->ran; }));
-    return ran ? static_cast<double>(cases_of(blocks).size()) / static_cast<double>(ran) : 0;
+    const int ran = plan_cases_ran(*plan_);
+    return ran ? static_cast<double>(cases_of(blocks).size()) / ran : 0;
 }
 
 std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)

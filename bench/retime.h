@@ -31,8 +31,6 @@ class Retimer {
     // estimate of the round's duration as a share of the first pass's.
     double share(const std::vector<int> &blocks) const;
 
-    int rounds() const { return static_cast<int>(rounds_.size()); }
-
     // BENCH.md's sentence on the re-timing ("" when nothing was re-timed), and blocks still
     // disturbed after the last round.
     std::string summary() const;

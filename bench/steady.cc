@@ -58,7 +58,7 @@ static std::map<int, std::vector<const BenchCase *>> checkpoints(const BenchPlan
 {
     std::map<int, std::vector<const BenchCase *>> by;
     for (const auto &c : plan.cases)
-        if ((c->groups & GROUP_STEADY) && c->ran && c->error.empty() && !std::isnan(c->median_ms))
+        if ((c->groups & GROUP_STEADY) && case_timed(c.get()))
             by[c->threads].push_back(c.get());
     return by;
 }
