@@ -120,6 +120,11 @@ static inline void retro_simd_count(const uint32_t *out, size_t base, unsigned l
  * RETRO_SKIP_FAR while probes keep failing, back to RETRO_SKIP_NEAR after a skip. */
 enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
 
+/* Painting steps a group of modes exact and lod holds before storing them in one pass over their
+ * rows (simd_exact_tpl.h, paint_batch): more steps share a row's store, but each row then picks
+ * its colour among more. 4 measured faster than 2 and no slower than 8 (docs/KERNELS.md). */
+enum { RETRO_SIMD_PAINT_BATCH = 4 };
+
 /* The names simd_strip_tpl.h makes, and the helpers of an ISA file: SIMD_NAME(x) is <isa>_x for
  * the SIMD_ISA the file defines (sse2, avx2, avx512), expanded where it is used. */
 #define RETRO_SIMD_CAT_(a, b) a##b

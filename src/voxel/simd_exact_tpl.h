@@ -2,7 +2,8 @@
  * of adjacent columns in modes exact and lod, painting by masked row stores or column spans. */
 
 #if SIMD_ROW_STORES
-/* Rows lo..hi of columns u0.. get colour where y < row <= top, one masked store per row. */
+/* Rows lo..hi of columns u0.. get colour where y < row <= top, one masked store per row (the
+ * sky above a finished group). */
 static void SIMD_NAME(paint_rows)(const retro_frame *f, int u0, int lo, int hi, simd_i32 y, simd_i32 top,
                                   simd_i32 colour)
 {
@@ -11,6 +12,40 @@ static void SIMD_NAME(paint_rows)(const retro_frame *f, int u0, int lo, int hi, 
     simd_i32 r = v_set1_i(lo);
     for (int row = lo; row <= hi; row++, at -= W) {
         simd_mask m = v_rows(r, y, top);
+        v_maskstore(f->out + at, m, colour);
+        RETRO_SIMD_COUNT(f->out, at, v_bits(m));
+        r = v_add_i(r, v_set1_i(1));
+    }
+}
+
+/* The last K = RETRO_SIMD_PAINT_BATCH painting steps of a group, stored in one pass over their
+ * rows. Step k (0..K-1) left the lane's y-buffer at Y[k], with y0 <= Y[0] <= .. <= Y[K-1] (y0:
+ * before step 0), so painting step by step, step k wrote rows (Y[k-1], Y[k]] (y0 for Y[-1]) of
+ * the lane with c[k], and a lane that step did not raise has Y[k] = Y[k-1] and wrote nothing.
+ * Those ranges tile (y0, Y[K-1]], so row r of it gets c[k] for the least k with r <= Y[k]: the
+ * same pixels and colours as K separate paints, each pixel still written once. Only the
+ * number of stores changes: one per row of the batch instead of one per row per step. */
+static void SIMD_NAME(paint_batch)(const retro_frame *f, int u0, simd_i32 y0, const simd_i32 *Y, const simd_i32 *c)
+{
+    enum { K = RETRO_SIMD_PAINT_BATCH };
+    const simd_i32 top = Y[K - 1];
+    const simd_mask rose = v_igt(top, y0); /* every step of a batch raised some lane */
+    const int lo = v_min_where(rose, y0) + 1, hi = v_max_where(rose, top);
+    const size_t W = (size_t)f->W;
+    size_t at = (size_t)(f->H - lo) * W + (size_t)u0;
+    /* copies the unrolled loops keep in registers: read from Y and c, every row reloads them */
+    simd_i32 r = v_set1_i(lo), Yr[K], cr[K];
+#pragma GCC unroll 16
+    for (int k = 0; k < K; k++) {
+        Yr[k] = Y[k];
+        cr[k] = c[k];
+    }
+    for (int row = lo; row <= hi; row++, at -= W) {
+        const simd_mask m = v_rows(r, y0, top);
+        simd_i32 colour = cr[K - 1];
+#pragma GCC unroll 16
+        for (int k = K - 2; k >= 0; k--)
+            colour = v_select_i(v_igt(r, Yr[k]), colour, cr[k]);
         v_maskstore(f->out + at, m, colour);
         RETRO_SIMD_COUNT(f->out, at, v_bits(m));
         r = v_add_i(r, v_set1_i(1));
@@ -58,6 +93,12 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
         SIMD_NAME(skip_init)(&g, f, u0, width);
 #endif
     int sn = 1;
+#if SIMD_ROW_STORES
+    /* the painting steps not yet stored (paint_batch): the y-buffer before them, and after and
+     * the colours of each */
+    simd_i32 y_painted = y, pY[RETRO_SIMD_PAINT_BATCH], pc[RETRO_SIMD_PAINT_BATCH];
+    int pm = 0;
+#endif
     for (int n = 1; n < n_end;) {
         if (!v_bits(v_igt(v_set1_i(f->vcap[n]), y)))
             break;
@@ -88,10 +129,15 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
         SIMD_COUNT_LANES(painting, __builtin_popcount(v_bits(up)));
         if (v_bits(up)) {
 #if SIMD_ROW_STORES
-            /* Lanes that do not rise must not widen the rows. */
-            int lo = v_min_where(up, y) + 1, hi = v_max_where(up, v);
+            /* a lane that does not rise keeps its Y, so no row takes its colour of this step */
             simd_i32 c = SIMD_NAME(colours)(f, sf, k, &s_d, up, packed, bilinear);
-            SIMD_NAME(paint_rows)(f, u0, lo, hi, y, v, fog ? SIMD_NAME(fog_colours)(c, f->fog[d], f->sky) : c);
+            pc[pm] = fog ? SIMD_NAME(fog_colours)(c, f->fog[d], f->sky) : c;
+            pY[pm] = v_max_i(y, v);
+            if (++pm == RETRO_SIMD_PAINT_BATCH) {
+                SIMD_NAME(paint_batch)(f, u0, y_painted, pY, pc);
+                y_painted = pY[RETRO_SIMD_PAINT_BATCH - 1];
+                pm = 0;
+            }
 #else
             int ys[SIMD_LANES], vs[SIMD_LANES];
             uint32_t cs[SIMD_LANES];
@@ -110,6 +156,13 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
     }
 #undef SIMD_DIST
 #if SIMD_ROW_STORES
+    if (pm) { /* slots left repeat the last step: no row passes its Y, so none picks them */
+        for (int i = pm; i < RETRO_SIMD_PAINT_BATCH; i++) {
+            pY[i] = pY[pm - 1];
+            pc[i] = pc[pm - 1];
+        }
+        SIMD_NAME(paint_batch)(f, u0, y_painted, pY, pc);
+    }
     SIMD_NAME(paint_rows)(f, u0, v_min_where(live, y) + 1, f->H, y, k->H, v_set1_i((int)f->sky));
 #else
     int ys[SIMD_LANES];
