@@ -225,10 +225,85 @@ static void register_case(BenchCase *c, bool quick)
         b->MinTime(c->min_time);
 }
 
-// Rounds of retime.h after the first pass, while the re-timing so far and the round's estimate
-// (its share of the cases, of the first pass's duration) fit in the first pass's duration: a
-// machine slow for good would otherwise keep the run going for ever.
-static void retime(Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
+// The reference frame's mean ms over a batch of frames (at least 10, for at least 0.2 s of wall
+// clock, as a checkpoint times its repetitions: a batch shorter than the scheduler's time slice
+// would miss another program sharing the cores), rendered with the checkpoint case c's kernel,
+// frame and threads in a context of its own; NaN if a frame fails.
+static double reference_batch(const BenchCase *c, retro_ctx *rc, std::vector<uint32_t> *out)
+{
+    using clock = std::chrono::steady_clock;
+    const bench_scene *s = c->scene;
+    player_t p = s->pose;
+    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out->data()};
+    retro_render_opts o = retro_render_opts_default();
+    o.mode = c->mode;
+    o.threads = c->threads;
+    const clock::time_point t0 = clock::now();
+    double elapsed = 0;
+    int n = 0;
+    for (; n < 10 || elapsed < 0.2; n++) {
+        if (retro_render(rc, c->kernel, &o, &p, &frame) != RETRO_OK)
+            return std::nan("");
+        elapsed = std::chrono::duration<double>(clock::now() - t0).count();
+    }
+    return 1e3 * elapsed / n;
+}
+
+// The machine's slow spells last from seconds to minutes on a shared VM, and a round started
+// inside one is disturbed again. So before a round the reference frame (the checkpoint at the
+// most threads, the one that drifts most) is rendered in batches until a batch's mean comes
+// within half of NOISY_DRIFT of that checkpoint's fastest timing, for at most `limit` seconds.
+// Whether it did; *waited gets the seconds spent. The blocks re-timed after it are judged by
+// their own checkpoints as before: the wait only chooses when to start.
+static bool wait_for_quiet(const BenchPlan &plan, const Retimer &r, double limit, double *waited)
+{
+    using clock = std::chrono::steady_clock;
+    const clock::time_point t0 = clock::now();
+    *waited = 0;
+    const BenchCase *ref = nullptr;
+    for (const auto &c : plan.cases)
+        if ((c->groups & GROUP_STEADY) && (!ref || c->threads > ref->threads))
+            ref = c.get();
+    const double best = ref ? r.fastest(ref->threads) : std::nan("");
+    if (std::isnan(best))
+        return true; // nothing to compare with: no wait
+    retro_ctx *rc = retro_ctx_new();
+    if (!rc)
+        return true; // nothing to measure with: no wait
+    std::vector<uint32_t> out(static_cast<size_t>(ref->W) * static_cast<size_t>(ref->H));
+    bind_for(ref->threads);
+    bool quiet = false;
+    double next_note = 0, now = 0, t = 0;
+    for (;;) {
+        t = reference_batch(ref, rc, &out);
+        now = std::chrono::duration<double>(clock::now() - t0).count();
+        if (std::isnan(t) || t <= best * (1 + NOISY_DRIFT / 2)) {
+            quiet = !std::isnan(t);
+            break;
+        }
+        if (now >= limit)
+            break;
+        if (now >= next_note) {
+            std::fprintf(stderr, "  waiting for a quiet machine: the reference frame takes %.3f ms, %.0f%% above "
+                         "its fastest %.3f ms (%.0f s of at most %.0f s)\n", t, 100 * (t / best - 1), best, now, limit);
+            next_note = now + 10;
+        }
+    }
+    retro_ctx_free(rc);
+    *waited = now;
+    if (quiet)
+        std::fprintf(stderr, "  the machine is quiet: the reference frame takes %.3f ms (fastest %.3f ms), after %.0f s\n",
+                     t, best, now);
+    else
+        std::fprintf(stderr, "  the machine stayed slow for %.0f s: the reference frame takes %.3f ms, %.0f%% above "
+                     "its fastest %.3f ms\n", now, t, 100 * (t / best - 1), best);
+    return quiet;
+}
+
+// Rounds of retime.h after the first pass, while the re-timing so far (waits included) and the
+// round's estimate (its share of the cases, of the first pass's duration) fit in the first
+// pass's duration: a machine slow for good would otherwise keep the run going for ever.
+static void retime(const BenchPlan &plan, Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
 {
     const double first = progress->seconds();
     for (int round = 1; round <= opt.retime; round++) {
@@ -238,9 +313,19 @@ static void retime(Retimer *r, ProgressReporter *progress, const Options &opt, b
             std::fprintf(stderr, "  none\n");
             return;
         }
-        if (progress->seconds() - first + r->share(blocks) * first > first) {
+        double left = first - (progress->seconds() - first) - r->share(blocks) * first;
+        if (left < 0) {
             std::fprintf(stderr, "  left as they are: re-timing them would take longer than the first pass\n");
             return;
+        }
+        if (opt.quiet_wait > 0) {
+            double waited;
+            const bool quiet = wait_for_quiet(plan, *r, std::min(opt.quiet_wait, left), &waited);
+            r->waited(waited, quiet);
+            if (!quiet) {
+                std::fprintf(stderr, "  left as they are: re-timing them now would be disturbed again\n");
+                return;
+            }
         }
         benchmark::ClearRegisteredBenchmarks();
         std::vector<BenchCase *> cases = r->take(blocks);
@@ -336,7 +421,7 @@ int main(int argc, char **argv)
     size_t ran = benchmark::RunSpecifiedBenchmarks(&progress);
     Retimer retimer(&plan);
     if (ran)
-        retime(&retimer, &progress, opt, quick);
+        retime(plan, &retimer, &progress, opt, quick);
     retro_ctx_free(live.rc);
     live.rc = nullptr;
     int status = ran ? 0 : 1;

@@ -27,6 +27,9 @@ void options_usage()
         "                  a spread case shows disturbed (default 3; 0 with --quick), within the\n"
         "                  first pass's duration\n"
         "  --retime-block=I  the first round re-times block I alone, whatever the timings (a test)\n"
+        "  --quiet-wait=S  before a round, wait up to S seconds (within the same budget) for the\n"
+        "                  reference frame to run within 5%% of its fastest checkpoint; a machine\n"
+        "                  still slow then ends the re-timing (default 120; 0 with --quick: no wait)\n"
         "\n"
         "Scenes: maps/{alpine,islands,canyon} at their default view and\n"
         "$RETRO_SHARED/course/{valley,island,pyramids} (default ../shared) at the course poses.\n"
@@ -135,6 +138,9 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
             ok = std::sscanf(v.c_str(), "%d%c", &o->retime, &junk) == 1 && o->retime >= 0;
         else if (!ok && option(a, "--retime-block=", &v))
             ok = std::sscanf(v.c_str(), "%d%c", &o->retime_block, &junk) == 1 && o->retime_block >= 0;
+        else if (!ok && option(a, "--quiet-wait=", &v))
+            ok = std::sscanf(v.c_str(), "%lf%c", &o->quiet_wait, &junk) == 1 && o->quiet_wait >= 0 &&
+                 o->quiet_wait <= 86400;
         if (!ok) {
             std::fprintf(stderr, "retro-bench: unknown or bad argument '%s' (--help)\n", args[i]);
             return false;
@@ -142,6 +148,8 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
     }
     if (o->retime < 0)
         o->retime = o->quick ? 0 : 3;
+    if (o->quiet_wait < 0)
+        o->quiet_wait = o->quick ? 0 : 120;
     if (o->quick) {
         plan->resolutions = {{320, 240}, {640, 480}, {1920, 1080}};
         plan->distances = {100, 800, 3000};

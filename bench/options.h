@@ -17,6 +17,7 @@ struct Options {
     bool no_extras = false; // --no-extras: leave out the submission and effect tables
     int retime = -1;        // --retime: rounds of re-timing disturbed blocks (retime.h); -1: 3, quick 0
     int retime_block = -1;  // --retime-block: the block the first round re-times alone (a test)
+    double quiet_wait = -1; // --quiet-wait: most seconds to wait for a quiet machine before a round; -1: 120, quick 0
 };
 
 void options_usage();

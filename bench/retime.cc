@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <set>
 
 #include "busy.h"
@@ -95,6 +96,18 @@ std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
     return cases;
 }
 
+double Retimer::fastest(int threads) const
+{
+    auto it = fastest_.find(threads);
+    return it == fastest_.end() ? std::nan("") : it->second;
+}
+
+void Retimer::waited(double seconds, bool quiet)
+{
+    waits_.push_back(seconds);
+    gave_up_ = !quiet;
+}
+
 static std::string blocks_of(size_t n)
 {
     return std::to_string(n) + (n == 1 ? " block" : " blocks");
@@ -104,9 +117,14 @@ std::string Retimer::summary() const
 {
     std::string s;
     for (size_t r = 0; r < rounds_.size(); r++) {
-        char b[96];
+        char b[192];
         std::snprintf(b, sizeof b, "%s (%d cases with their checkpoints) in round %zu", blocks_of(rounds_[r].size()).c_str(),
                       cases_[r], r + 1);
+        if (r < waits_.size() && waits_[r] >= 1) {
+            char w[96];
+            std::snprintf(w, sizeof w, ", after waiting %.0f s for a quiet machine", waits_[r]);
+            std::strcat(b, w);
+        }
         s += std::string(r == 0 ? "" : "; ") + b;
     }
     if (!s.empty())
@@ -119,6 +137,6 @@ std::string Retimer::summary() const
             "% over its repetitions. The tables show each case's last timing.";
     if (!left_.empty())
         s += std::string(s.empty() ? "" : " ") + "Still disturbed when re-timing stopped: " + blocks_of(left_.size()) +
-             ".";
+             (gave_up_ ? ", the machine having stayed slow through the wait for a quiet one" : "") + ".";
     return s;
 }

@@ -31,6 +31,12 @@ class Retimer {
     // estimate of the round's duration as a share of the first pass's.
     double share(const std::vector<int> &blocks) const;
 
+    // The fastest checkpoint timing at this thread count so far (NaN before disturbed()).
+    double fastest(int threads) const;
+
+    // The wait for a quiet machine before the next round (seconds; quiet: whether it came).
+    void waited(double seconds, bool quiet);
+
     // BENCH.md's sentence on the re-timing ("" when nothing was re-timed), and blocks still
     // disturbed after the last round.
     std::string summary() const;
@@ -43,6 +49,8 @@ class Retimer {
     std::vector<std::vector<int>> rounds_;       // the blocks of each round
     std::vector<int> cases_;                     // cases re-timed in each round (checkpoints included)
     std::vector<int> left_;                      // blocks disturbed at the last look, not re-timed
+    std::vector<double> waits_;                  // seconds waited for a quiet machine before each round
+    bool gave_up_ = false;                       // the last wait ended with the machine still slow
     int blocks_ = 0;                             // blocks in the run
 };
 

@@ -92,7 +92,7 @@ fi
 # Re-timing (bench/retime.h): block 0, asked for, is timed again with its checkpoints; the JSON
 # keeps only the last timing of each case and BENCH.md says what was re-timed.
 run_bench "$tmp/retime" " when re-timing" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
-  --benchmark_filter='^steady/' --retime=1 --retime-block=0
+  --benchmark_filter='^steady/' --retime=1 --retime-block=0 --quiet-wait=0
 check "$tmp/retime/out" '^  block 0: asked for (--retime-block)$' "block 0 was not re-timed when asked"
 check "$tmp/retime/out" '^re-timing [1-9][0-9]* cases$' "no re-timing pass"
 # (the form scripts/readme-figures.py reads)
@@ -103,7 +103,22 @@ if [ "$n" != 1 ]; then
   echo "FAIL: checkpoint 0 has $n medians in the JSON after its re-timing, not 1"
   fail=1
 fi
-for bad in --retime=x --retime=-1 --benchmark_out_format=csv; do
+# The wait for a quiet machine before a round (--quiet-wait): it ends one way or the other, and
+# BENCH.md says which: a round re-timed, or blocks left because the machine stayed slow.
+run_bench "$tmp/wait" " when waiting for a quiet machine" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
+  --benchmark_filter='^steady/' --retime=1 --retime-block=0 --quiet-wait=5
+if grep -q '^  the machine is quiet: the reference frame takes [0-9.]* ms (fastest [0-9.]* ms), after [0-9]* s$' "$tmp/wait/out"; then
+  check "$tmp/wait/out" '^re-timing [1-9][0-9]* cases$' "no re-timing pass after the machine was quiet"
+  check "$tmp/wait/BENCH.md" "in round 1" "BENCH.md does not say what was re-timed after the wait"
+elif grep -q '^  the machine stayed slow for [0-9]* s: ' "$tmp/wait/out"; then
+  check "$tmp/wait/BENCH.md" "Still disturbed when re-timing stopped: 1 block, the machine having stayed slow" \
+    "BENCH.md does not say the machine stayed slow"
+else
+  echo "FAIL: the wait for a quiet machine said neither quiet nor slow:"
+  cat "$tmp/wait/out"
+  fail=1
+fi
+for bad in --retime=x --retime=-1 --quiet-wait=-1 --quiet-wait=x --quiet-wait=nan --benchmark_out_format=csv; do
   "$bench" "$bad" >"$tmp/bad.out" 2>&1
   rc=$?
   if [ "$rc" != 2 ] || [ "$(wc -l <"$tmp/bad.out")" != 1 ]; then
