@@ -138,24 +138,35 @@ static void time_frames(benchmark::State &st, const BenchCase *c, player_t *p, c
     st.counters[FRAME_MEDIAN_COUNTER] = sorted_median(t);
 }
 
+// The frame a case renders (its pose is c->scene->pose) into out, and what it asks for.
+static ctx_t case_frame(const BenchCase *c, uint32_t *out)
+{
+    const bench_scene *s = c->scene;
+    return {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out};
+}
+
+static retro_render_opts case_opts(const BenchCase *c)
+{
+    retro_render_opts o = retro_render_opts_default();
+    o.mode = c->mode;
+    o.fx = c->fx;
+    o.threads = c->threads;
+    o.no_skip = c->no_skip;
+    return o;
+}
+
 static void run_case(benchmark::State &st, const BenchCase *c)
 {
     if (!retro_kernel_runs_here(c->kernel)) {
         st.SkipWithError("this CPU (or RETRO_ISA) lacks the instruction set the kernel needs");
         return;
     }
-    const bench_scene *s = c->scene;
-    player_t p = s->pose;
-    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color,
-                   nullptr};
+    player_t p = c->scene->pose;
+    ctx_t frame = case_frame(c, nullptr);
     if (live.owner != c) {
         retro_ctx_free(live.rc);
         live.rc = retro_ctx_new();
-        live.opts = retro_render_opts_default();
-        live.opts.mode = c->mode;
-        live.opts.fx = c->fx;
-        live.opts.threads = c->threads;
-        live.opts.no_skip = c->no_skip;
+        live.opts = case_opts(c);
         live.out.assign(static_cast<size_t>(c->W) * static_cast<size_t>(c->H), 0);
         live.owner = c;
         bind_for(c->threads);
@@ -232,12 +243,9 @@ static void register_case(BenchCase *c, bool quick)
 static double reference_batch(const BenchCase *c, retro_ctx *rc, std::vector<uint32_t> *out)
 {
     using clock = std::chrono::steady_clock;
-    const bench_scene *s = c->scene;
-    player_t p = s->pose;
-    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out->data()};
-    retro_render_opts o = retro_render_opts_default();
-    o.mode = c->mode;
-    o.threads = c->threads;
+    player_t p = c->scene->pose;
+    ctx_t frame = case_frame(c, out->data());
+    const retro_render_opts o = case_opts(c);
     const clock::time_point t0 = clock::now();
     double elapsed = 0;
     int n = 0;

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <set>
 
 #include "busy.h"
@@ -117,15 +116,14 @@ std::string Retimer::summary() const
 {
     std::string s;
     for (size_t r = 0; r < rounds_.size(); r++) {
-        char b[192];
+        char b[96];
         std::snprintf(b, sizeof b, "%s (%d cases with their checkpoints) in round %zu", blocks_of(rounds_[r].size()).c_str(),
                       cases_[r], r + 1);
-        if (r < waits_.size() && waits_[r] >= 1) {
-            char w[96];
-            std::snprintf(w, sizeof w, ", after waiting %.0f s for a quiet machine", waits_[r]);
-            std::strcat(b, w);
-        }
         s += std::string(r == 0 ? "" : "; ") + b;
+        if (r < waits_.size() && waits_[r] >= 1) {
+            std::snprintf(b, sizeof b, ", after waiting %.0f s for a quiet machine", waits_[r]);
+            s += b;
+        }
     }
     if (!s.empty())
         s = "Re-timed, of the run's " + std::to_string(blocks_) +
