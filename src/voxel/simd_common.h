@@ -125,6 +125,11 @@ enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
  * its colour among more. 4 measured faster than 2 and no slower than 8 (docs/KERNELS.md). */
 enum { RETRO_SIMD_PAINT_BATCH = 4 };
 
+/* Groups a strip of modes exact and lod renders before painting the sky above them row by row
+ * (simd_strip_tpl.h, exact_run): a row's stores then cover up to this many groups' columns
+ * side by side, and their final y-buffers stay on the stack (4 KiB at 16 lanes). */
+enum { RETRO_SIMD_SKY_GROUPS = 64 };
+
 /* The names simd_strip_tpl.h makes, and the helpers of an ISA file: SIMD_NAME(x) is <isa>_x for
  * the SIMD_ISA the file defines (sse2, avx2, avx512), expanded where it is used. */
 #define RETRO_SIMD_CAT_(a, b) a##b

@@ -1,19 +1,32 @@
 /* Part of simd_strip_tpl.h, whose contract applies, included by it once per ISA file: a group
- * of adjacent columns in modes exact and lod, painting by masked row stores or column spans. */
+ * of adjacent columns in modes exact and lod, painting by masked row stores or column spans,
+ * and with row stores the sky above several finished groups. */
 
 #if SIMD_ROW_STORES
-/* Rows lo..hi of columns u0.. get colour where y < row <= top, one masked store per row (the
- * sky above a finished group). */
-static void SIMD_NAME(paint_rows)(const retro_frame *f, int u0, int lo, int hi, simd_i32 y, simd_i32 top,
-                                  simd_i32 colour)
+/* The sky above n finished adjacent groups, the first at column u0 and first columns wide, the
+ * others SIMD_LANES: y[g] is group g's final y-buffer, H in lanes past its columns. Row by row across the groups, so one row's
+ * stores are adjacent in out, where sky group by group stored one vector per row H rows apart:
+ * a strided walk through the frame that the hardware's prefetchers do not follow
+ * (docs/KERNELS.md, "Where the stores go"). */
+static void SIMD_NAME(sky_rows)(const retro_frame *f, int u0, int first, const simd_i32 *y, int n,
+                                const SIMD_NAME(consts) *k)
 {
     const size_t W = (size_t)f->W;
-    size_t at = (size_t)(f->H - lo) * W + (size_t)u0;
-    simd_i32 r = v_set1_i(lo);
-    for (int row = lo; row <= hi; row++, at -= W) {
-        simd_mask m = v_rows(r, y, top);
-        v_maskstore(f->out + at, m, colour);
-        RETRO_SIMD_COUNT(f->out, at, v_bits(m));
+    const simd_i32 sky = v_set1_i((int)f->sky), all = v_set1_i(f->H + 1);
+    int lo = f->H;
+    for (int g = 0; g < n; g++) {
+        const int m = v_min_where(v_igt(all, y[g]), y[g]);
+        lo = m < lo ? m : lo;
+    }
+    size_t at = (size_t)(f->H - lo - 1) * W + (size_t)u0;
+    simd_i32 r = v_set1_i(lo + 1);
+    for (int row = lo + 1; row <= f->H; row++, at -= W) {
+        size_t a = at;
+        for (int g = 0; g < n; a += (size_t)(g ? SIMD_LANES : first), g++) {
+            const simd_mask m = v_rows(r, y[g], k->H);
+            v_maskstore(f->out + a, m, sky);
+            RETRO_SIMD_COUNT(f->out, a, v_bits(m));
+        }
         r = v_add_i(r, v_set1_i(1));
     }
 }
@@ -72,11 +85,12 @@ static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
  * distance is n, or dist[n] in mode lod (lod), where vcap is indexed by n as well. With skip,
  * the group probes the pyramid, every lane with its own y-buffer (simd_skip_tpl.h, on
  * simd_common.h's schedule), and jumps over the distances no lane can paint in; s then holds a distance the loop
- * no longer wants, and sn says which. */
+ * no longer wants, and sn says which. With row stores the group leaves the sky to its strip:
+ * *top receives its final y-buffer. */
 RETRO_SIMD_INLINE void
 SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
                        int width, const int pow2, const int packed, const int fog, const int skip, const int lod,
-                       const int bilinear)
+                       const int bilinear, simd_i32 *top)
 {
     const simd_mask live = v_first(width);
     const int n_end = lod ? f->ndist : f->D;
@@ -163,8 +177,9 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
         }
         SIMD_NAME(paint_batch)(f, u0, y_painted, pY, pc);
     }
-    SIMD_NAME(paint_rows)(f, u0, v_min_where(live, y) + 1, f->H, y, k->H, v_set1_i((int)f->sky));
+    *top = y; /* the strip paints the sky (sky_rows) */
 #else
+    (void)top;
     int ys[SIMD_LANES];
     v_store_i(ys, y);
     for (int l = 0; l < width; l++)

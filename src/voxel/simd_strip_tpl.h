@@ -77,6 +77,40 @@ retro_sample_counts retro_simd_counts;
 #include "simd_exact_tpl.h"
 #include "simd_course_tpl.h"
 
+/* Columns before u at which a group starts on a SIMD_LANES * 4-byte boundary of out's first
+ * row: from there each full group's row store is one aligned vector (one 64-byte line for 16
+ * lanes) instead of a vector split across two lines (docs/KERNELS.md, "Where the stores go").
+ * Which columns a group holds changes where it may skip, never a pixel. */
+RETRO_SIMD_INLINE int SIMD_NAME(head)(const retro_frame *f, int u)
+{
+    const int m = (int)(((uintptr_t)(f->out + u) / sizeof *f->out) % SIMD_LANES);
+    return m ? SIMD_LANES - m : SIMD_LANES;
+}
+
+/* Columns [u0, u1) in groups aligned by head, RETRO_SIMD_SKY_GROUPS groups at a time, each
+ * run's sky then painted across it (sky_rows). */
+RETRO_SIMD_INLINE void SIMD_NAME(exact_run)(const retro_frame *f, const retro_simd_frame *sf,
+                                            const SIMD_NAME(consts) *k, int u0, int u1, const int pow2,
+                                            const int packed, const int fog, const int skip, const int lod,
+                                            const int bilinear)
+{
+    simd_i32 top[RETRO_SIMD_SKY_GROUPS];
+    int u = u0, w = SIMD_NAME(head)(f, u0);
+    while (u < u1) {
+        const int c = u, first = w;
+        int g = 0;
+        for (; u < u1 && g < RETRO_SIMD_SKY_GROUPS; u += w, w = SIMD_LANES, g++)
+            SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < w ? u1 - u : w, pow2, packed, fog, skip, lod, bilinear,
+                                   &top[g]);
+#if SIMD_ROW_STORES
+        SIMD_NAME(sky_rows)(f, c, first, top, g, k);
+#else
+        (void)c;
+        (void)first;
+#endif
+    }
+}
+
 /* One instantiation per (lod, bilinear, fog, power-of-two S, packed map), so the inner loops
  * carry no tests of them; occlusion skipping (a frame with a pyramid, docs/SKIPPING.md) is one
  * more. The bilinear ones test the packed map per sample: four loads each outweigh it. */
@@ -85,13 +119,9 @@ retro_sample_counts retro_simd_counts;
                                 const SIMD_NAME(consts) *k, int u0, int u1)                              \
     {                                                                                                    \
         if (f->pyr)                                                                                      \
-            for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
-                                       packed, fog, 1, lod, bilinear);                                   \
+            SIMD_NAME(exact_run)(f, sf, k, u0, u1, pow2, packed, fog, 1, lod, bilinear);                \
         else                                                                                             \
-            for (int u = u0; u < u1; u += SIMD_LANES)                                                   \
-                SIMD_NAME(exact_group)(f, sf, k, u, u1 - u < SIMD_LANES ? u1 - u : SIMD_LANES, pow2,    \
-                                       packed, fog, 0, lod, bilinear);                                   \
+            SIMD_NAME(exact_run)(f, sf, k, u0, u1, pow2, packed, fog, 0, lod, bilinear);                \
     }
 /* The strips of one (lod, fog), named strip_lod<0|1>_fog<0|1>_<map reads>. */
 #define SIMD_STRIP_NAME(lod, fog, rest) strip_lod##lod##_fog##fog##_##rest
