@@ -8,8 +8,8 @@
  * the columns other threads rendered with the same additions (retro_course_advance), so at
  * every column they hold exactly the values the single-thread reference has there.
  *
- * Schedule: chunks of 64 whole columns (a multiple of 16, so chunk edges fall on 64-byte lines
- * of out and SIMD groups stay whole), handed out monotonic-dynamically. Chosen by measurement
+ * Schedule: chunks of 64 whole columns with edges on out's 64-byte lines (column_chunks.h),
+ * handed out monotonic-dynamically. Chosen by measurement
  * over 60 seeded poses of the default scenes (README, "Load balance"): 64 columns and two
  * static halves were within noise on average, 64 held up better on the worst poses, and
  * chunks of 16-32 lost to the cost each chunk of a strip carries (its constants, its first
@@ -17,6 +17,7 @@
 #include <omp.h>
 
 #include "env.h"
+#include "column_chunks.h"
 #include "kernels.h"
 #include "omp_pool.h"
 
@@ -40,9 +41,8 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
         strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    const int chunk = chunk_columns();
+    const retro_column_chunks cc = retro_column_chunks_of(f, chunk_columns());
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map */
-    const int chunks = (f->W + chunk - 1) / chunk;
     retro_pool_enter(pool);
 #pragma omp parallel num_threads(threads)
     {
@@ -56,8 +56,9 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
          * in any order (static stealing): a thread could then render an earlier chunk with
          * accumulators already past it. */
 #pragma omp for schedule(monotonic: dynamic, 1) nowait
-        for (int c = 0; c < chunks; c++) {
-            int u0 = c * chunk, u1 = u0 + chunk < f->W ? u0 + chunk : f->W;
+        for (int c = 0; c < cc.count; c++) {
+            int u0, u1;
+            retro_column_chunk(&cc, c, &u0, &u1);
             retro_course_advance(f, qx, qy, at, u0);
             strip(f, qx, qy, u0, u1);
             at = u1;

@@ -13,6 +13,7 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 
+#include "column_chunks.h"
 #include "env.h"
 #include "hmax_cache.h"
 #include "kernels.h"
@@ -24,7 +25,7 @@
 typedef struct {
     const retro_frame *f;
     atomic_int next; /* next chunk to hand out */
-    int chunks;
+    retro_column_chunks chunks;
     float *scratch; /* thread t's accumulators at 2t and 2t + 1 strides */
     size_t stride;
 } pt_job;
@@ -38,9 +39,10 @@ static void pt_task(void *arg, int t)
     int at = 0;
     for (;;) {
         int c = atomic_fetch_add(&job->next, 1);
-        if (c >= job->chunks)
+        if (c >= job->chunks.count)
             break;
-        int u0 = c * PT_CHUNK, u1 = u0 + PT_CHUNK < f->W ? u0 + PT_CHUNK : f->W;
+        int u0, u1;
+        retro_column_chunk(&job->chunks, c, &u0, &u1);
         retro_course_advance(f, qx, qy, at, u0);
         f->strip(f, qx, qy, u0, u1);
         at = u1;
@@ -122,7 +124,7 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    pt_job job = {.f = f, .chunks = (f->W + PT_CHUNK - 1) / PT_CHUNK, .scratch = rc->tscratch, .stride = stride};
+    pt_job job = {.f = f, .chunks = retro_column_chunks_of(f, PT_CHUNK), .scratch = rc->tscratch, .stride = stride};
     atomic_init(&job.next, 0);
     retro_pt_pool_run(pool, pt_task, &job);
 }
