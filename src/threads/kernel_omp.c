@@ -9,11 +9,11 @@
  * every column they hold exactly the values the single-thread reference has there.
  *
  * Schedule: chunks of 64 whole columns with edges on out's 64-byte lines (column_chunks.h),
- * handed out monotonic-dynamically. Chosen by measurement
- * over 60 seeded poses of the default scenes (README, "Load balance"): 64 columns and two
- * static halves were within noise on average, 64 held up better on the worst poses, and
- * chunks of 16-32 lost to the cost each chunk of a strip carries (its constants, its first
- * distances) and guided scheduling gained nothing. RETRO_OMP_CHUNK overrides it. */
+ * handed out monotonic-dynamically. Chosen by measurement over 60 seeded poses of the default
+ * scenes (docs/KERNELS.md, "Load balance"): 64 columns and two static halves were within noise
+ * on average, 64 held up better on the worst poses, and chunks of 16-32 lost to the cost each
+ * chunk of a strip carries (its constants, its first distances) and guided scheduling gained
+ * nothing. RETRO_OMP_CHUNK overrides it. */
 #include <omp.h>
 
 #include "env.h"

@@ -4,10 +4,9 @@
 
 #if SIMD_ROW_STORES
 /* The sky above n finished adjacent groups, the first at column u0 and first columns wide, the
- * others SIMD_LANES: y[g] is group g's final y-buffer, H in lanes past its columns. Row by row across the groups, so one row's
- * stores are adjacent in out, where sky group by group stored one vector per row H rows apart:
- * a strided walk through the frame that the hardware's prefetchers do not follow
- * (docs/KERNELS.md, "Where the stores go"). */
+ * others SIMD_LANES: y[g] is group g's final y-buffer, H in lanes past its columns. Painted row
+ * by row across the groups, so one row's stores are adjacent in out; painted group by group,
+ * each store was a frame row away from the last (docs/KERNELS.md, "Where the stores go"). */
 static void SIMD_NAME(sky_rows)(const retro_frame *f, int u0, int first, const simd_i32 *y, int n,
                                 const SIMD_NAME(consts) *k)
 {

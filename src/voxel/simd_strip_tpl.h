@@ -77,10 +77,11 @@ retro_sample_counts retro_simd_counts;
 #include "simd_exact_tpl.h"
 #include "simd_course_tpl.h"
 
-/* Columns before u at which a group starts on a SIMD_LANES * 4-byte boundary of out's first
- * row: from there each full group's row store is one aligned vector (one 64-byte line for 16
- * lanes) instead of a vector split across two lines (docs/KERNELS.md, "Where the stores go").
- * Which columns a group holds changes where it may skip, never a pixel. */
+/* The width of a group starting at column u: up to the next column whose pixel begins a
+ * SIMD_LANES * 4-byte block of out's first row, or SIMD_LANES when u's pixel does. Groups after
+ * it then store each row as one aligned vector (one 64-byte line for 16 lanes), not a vector
+ * split across two lines (docs/KERNELS.md, "Where the stores go"). Which columns share a group
+ * changes where the group may skip, never a pixel. */
 RETRO_SIMD_INLINE int SIMD_NAME(head)(const retro_frame *f, int u)
 {
     const int m = (int)(((uintptr_t)(f->out + u) / sizeof *f->out) % SIMD_LANES);
