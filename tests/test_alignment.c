@@ -50,8 +50,9 @@ Test(alignment, every_kernel_at_every_offset_of_out_within_a_line)
         const frame_case *fc = &cases[ci];
         const size_t n = (size_t)fc->W * fc->H;
         uint32_t *want = malloc(n * 4);
-        /* room for any offset within a line, with guards on both sides */
-        uint32_t *block = aligned_alloc(64, (n + 2 * PAD) * 4);
+        /* room for any offset within a line, with guards on both sides; aligned_alloc takes a
+         * size that is a multiple of the alignment */
+        uint32_t *block = aligned_alloc(64, ((n + 2 * PAD) * 4 + 63) / 64 * 64);
         cr_assert(want && block);
         ctx_t c = {fc->W, fc->H, S, D, SKY, m.height, m.color, want};
         cr_assert_eq(render_into(rc, retro_kernel_find("naive"), fc, 0, &p, &c), RETRO_OK);
