@@ -22,8 +22,7 @@ typedef struct {
     int no_skip;
 } frame_case;
 
-static retro_err render_into(retro_ctx *rc, const retro_kernel *k, const frame_case *fc, int threads,
-                             const player_t *p, ctx_t *c)
+static retro_render_opts case_opts(const frame_case *fc, int threads)
 {
     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
     o.mode = fc->mode;
@@ -31,6 +30,13 @@ static retro_err render_into(retro_ctx *rc, const retro_kernel *k, const frame_c
     o.threads = threads;
     if (fc->mode == RETRO_MODE_LOD)
         o.lod = 0.02f;
+    return o;
+}
+
+static retro_err render_into(retro_ctx *rc, const retro_kernel *k, const frame_case *fc, int threads,
+                             const player_t *p, ctx_t *c)
+{
+    const retro_render_opts o = case_opts(fc, threads);
     return retro_render(rc, k, &o, p, c);
 }
 
@@ -66,10 +72,7 @@ Test(alignment, every_kernel_at_every_offset_of_out_within_a_line)
             const retro_kernel *k = &retro_kernels[ki];
             if (k->family != &retro_family_voxel || !strcmp(k->name, "naive"))
                 continue;
-            retro_render_opts probe = RETRO_RENDER_OPTS_DEFAULT;
-            probe.mode = fc->mode;
-            if (fc->mode == RETRO_MODE_LOD)
-                probe.lod = 0.02f;
+            const retro_render_opts probe = case_opts(fc, 0);
             char why[160];
             if (retro_render_check(k, &probe, why, sizeof why) != RETRO_OK)
                 continue; /* a mode or ISA level this kernel or CPU lacks */
