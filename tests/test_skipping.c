@@ -211,6 +211,37 @@ Test(skipping, random_poses_on_generated_maps)
     rig_close(g);
 }
 
+/* Bilinear's bound is the block maximum plus a rounding margin far below a unit of height
+ * (RETRO_BILINEAR_OVER): flat ground and a single step of one unit, with the camera at,
+ * just above and just below the ground, put the filtered heights and the bound within that
+ * margin of each other on every probe. Even and odd frame heights put the middle of the
+ * screen on and between rows. */
+Test(skipping, bilinear_flat_ground)
+{
+    trio *g = rig_open();
+    retro_effects fx;
+    memset(&fx, 0, sizeof fx);
+    fx.flags = RETRO_FX_BILINEAR;
+    static const int levels[] = {0, 1, 128, 254, 255};
+    for (size_t k = 0; k < sizeof levels / sizeof levels[0]; k++)
+        for (int step = 0; step < 2; step++) {
+            retro_map m;
+            make_map(&m, 48);
+            memset(m.height, levels[k], (size_t)48 * 48);
+            if (step) /* the far half one unit lower, or higher at level 0 */
+                for (int j = 0; j < 48; j++)
+                    memset(m.height + (size_t)j * 48 + 24, levels[k] ? levels[k] - 1 : 1, 24);
+            new_map(g);
+            for (int dz = -1; dz <= 1; dz++)
+                for (int a = 0; a < NANGLES; a += 3) {
+                    check(g, "bilinear flat", &m, at(10.3f, 20.6f, angles[a], levels[k] + dz), 40, 31, 120, &fx);
+                    check(g, "bilinear flat", &m, at(10.5f, 20.5f, angles[a], levels[k] + dz), 33, 40, 200, &fx);
+                }
+            retro_map_free(&m);
+        }
+    rig_close(g);
+}
+
 /* Bilinear's height difference (simd_sample_tpl.h, bilinear_dh): one float subtraction where
  * the camera height is within 2^24 and no filtered height lies in (0, 2^-5), double otherwise.
  * A map of zeros with isolated low cells gives filtered heights down to the product of two

@@ -11,6 +11,7 @@
 #include "frame.h"
 #include "hmax_pyramid.h"
 #include "kernels.h"
+#include "retro_scene.h"
 #include "test_util.h"
 
 static player_t at(float x, float y, int angle, int height)
@@ -29,12 +30,13 @@ static void make_map(retro_map *m, int S)
 }
 
 /* The samples of one frame as the counting build of ybuffer sees them. */
-static retro_sample_counts count(retro_ctx *rc, retro_mode mode, int no_skip, const retro_map *m, player_t p, int W,
-                                 int H, int D, uint32_t *out)
+static retro_sample_counts count_fx(retro_ctx *rc, retro_mode mode, int no_skip, const retro_map *m, player_t p,
+                                    int W, int H, int D, uint32_t *out, const retro_effects *fx)
 {
     retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
     o.mode = (int)mode;
     o.no_skip = no_skip;
+    o.fx = fx;
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
     ctx_t c = {W, H, m->size, D, 0, m->height, m->color, out};
@@ -44,15 +46,21 @@ static retro_sample_counts count(retro_ctx *rc, retro_mode mode, int no_skip, co
     return retro_ybuffer_counts;
 }
 
-static void counts_mode(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
-                        int must_skip)
+static retro_sample_counts count(retro_ctx *rc, retro_mode mode, int no_skip, const retro_map *m, player_t p, int W,
+                                 int H, int D, uint32_t *out)
+{
+    return count_fx(rc, mode, no_skip, m, p, W, H, D, out, NULL);
+}
+
+static void counts_mode_fx(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+                           int must_skip, const retro_effects *fx)
 {
     retro_ctx *on = retro_ctx_new(), *off = retro_ctx_new();
     cr_assert(on && off);
     size_t n = (size_t)W * (size_t)H;
     uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     cr_assert(a && b);
-    retro_sample_counts s = count(on, mode, 0, m, p, W, H, D, a), t = count(off, mode, 1, m, p, W, H, D, b);
+    retro_sample_counts s = count_fx(on, mode, 0, m, p, W, H, D, a, fx), t = count_fx(off, mode, 1, m, p, W, H, D, b, fx);
     cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the counting build's frames differ", what);
     cr_assert_eq(s.painting, t.painting, "%s: %llu samples paint with skipping, %llu without", what,
                  (unsigned long long)s.painting, (unsigned long long)t.painting);
@@ -68,6 +76,12 @@ static void counts_mode(retro_mode mode, const char *what, const retro_map *m, p
     free(b);
     retro_ctx_free(on);
     retro_ctx_free(off);
+}
+
+static void counts_mode(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+                        int must_skip)
+{
+    counts_mode_fx(mode, what, m, p, W, H, D, must_skip, NULL);
 }
 
 static void counts_compare(const char *what, const retro_map *m, player_t p, int W, int H, int D, int must_skip)
@@ -101,6 +115,70 @@ Test(skipping, skipping_skips)
     /* mode course walks the torus of side S - 1 from its accumulated positions */
     counts_mode(RETRO_MODE_COURSE, "ridge (mode course)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     retro_map_free(&m);
+}
+
+/* Bilinear on flat ground at the camera's height, a frame an odd number of rows tall: every
+ * filtered height is the ground's up to rounding, so every sample projects to the middle row
+ * and only each column's first one paints. Skipping must prove the rest hidden from the
+ * first batch on: the bound's margin over the block maximum (RETRO_BILINEAR_OVER) moves a
+ * row by kd times the margin, and with a margin of a whole unit of height, near distances
+ * (kd >= 1) projected above the middle row and were evaluated one by one. */
+Test(skipping, bilinear_flat_ground_skips)
+{
+    static const int levels[] = {0, 1, 100, 254, 255};
+    retro_effects fx;
+    memset(&fx, 0, sizeof fx);
+    fx.flags = RETRO_FX_BILINEAR;
+    for (size_t k = 0; k < sizeof levels / sizeof levels[0]; k++) {
+        retro_map m;
+        make_map(&m, 64);
+        memset(m.height, levels[k], (size_t)64 * 64);
+        char what[64];
+        snprintf(what, sizeof what, "flat ground at %d, bilinear", levels[k]);
+        counts_mode_fx(RETRO_MODE_EXACT, what, &m, at(20.3f, 40.7f, 33, levels[k]), 64, 63, 400, 1, &fx);
+        retro_map_free(&m);
+    }
+}
+
+/* RETRO_BILINEAR_OVER's proof (hmax_pyramid.h) checked by brute force: filtered heights of
+ * corners at most M, through the kernels' own retro_bilinear_height, at random weights and
+ * at weights a few ulps from 0, 1/2 and 1, never exceed M + RETRO_BILINEAR_OVER, nor does their
+ * rounded difference from a camera height exceed the bound's. (None of them exceeds M at all
+ * here; the proof does not rule that out, so the margin stays.) */
+Test(skipping, bilinear_over_bound)
+{
+    static const float edges[] = {0.0f, 0x1p-24f, 0x1p-20f, 0.1f, 0.5f - 0x1p-25f, 0.5f, 0.5f + 0x1p-24f,
+                                  0.9f, 1.0f - 0x1p-24f, 1.0f - 0x1p-23f, 1.0f - 0x1p-20f};
+    static const int64_t cams[] = {0, 77, 255, 256, -1000, (1 << 24) + 1, -(1 << 30)};
+    enum { NE = sizeof edges / sizeof edges[0] };
+    uint8_t h[4];
+    retro_frame f;
+    memset(&f, 0, sizeof f);
+    f.S = 2;
+    f.height_map = h;
+    uint64_t st = 4242;
+    for (long t = 0; t < 400000; t++) {
+        const int M = 1 + (int)(rng_next(&st) % 255);
+        for (int c = 0; c < 4; c++)
+            h[c] = (t & 1) ? (uint8_t)M : (uint8_t)(rng_next(&st) % (uint64_t)(M + 1));
+        h[rng_next(&st) % 4] = (uint8_t)M;
+        float px, py;
+        if (t % 3 == 0) {
+            px = edges[rng_next(&st) % NE];
+            py = edges[rng_next(&st) % NE];
+        } else {
+            px = (float)(rng_next(&st) % (1u << 24)) * 0x1p-24f;
+            py = (float)(rng_next(&st) % (1u << 24)) * 0x1p-24f;
+        }
+        retro_bilerp b;
+        /* q = p + 1/2 rounds, and the kernel takes q - 1/2 again: p stays in [0, 1] */
+        const float hf = retro_bilinear_height(&f, px + 0.5f, py + 0.5f, &b);
+        const float bound = (float)M + RETRO_BILINEAR_OVER;
+        cr_assert_leq(hf, bound, "corners %d %d %d %d at (%a, %a): %a above M + margin", h[0], h[1], h[2], h[3],
+                      (double)px, (double)py, (double)hf);
+        const int64_t cam = cams[t % (long)(sizeof cams / sizeof cams[0])];
+        cr_assert_leq(retro_bilinear_dh(hf, cam), retro_bilinear_dh(bound, cam));
+    }
 }
 
 /* The same invariants on every default terrain, and on the course's valley frame if present. */

@@ -137,6 +137,21 @@ RETRO_HELPER int retro_skip_box_max(const retro_pyramid *p, int S, int I, int J,
 }
 #endif
 
+/* How far a bilinear height can exceed the largest of its four cells, M: by rounding only.
+ * Proof. The filtered height is hf = ((h00*wx + h10*tx)*wy) + ((h01*wx + h11*tx)*ty) in
+ * binary32, each operation rounded to nearest (relative error at most u = 2^-24, no fused
+ * multiply-add), with tx, ty in [0, 1) and wx = fl(1 - tx) <= (1 - tx)(1 + u), wy alike, and
+ * 0 <= h <= M (a product that underflows errs by at most 2^-150, far inside the margin below).
+ * Then fl(h00*wx) <= M(1 - tx)(1 + u)^2 and fl(h10*tx) <= M tx (1 + u), so their
+ * rounded sum is at most M(1 + u)^3; each row's sum times its weight adds (1 + u)^2 at most,
+ * and the last sum one more (1 + u): hf <= M(1 + u)^6 < M + 6.0001 M u <= M + 9.2e-5 for
+ * M <= 255 (heights are bytes), below 2^-13 = 1.2e-4. M + 2^-13 is an exact float (M < 2^8
+ * needs 8 bits above the point and 2^-13 13 below). tests/test_skipping_counts.c checks the
+ * bound by brute force (it finds no filtered height above M at all, which this proof does not
+ * claim). M + 1, the earlier margin, held too, but it moves a row by kd[d] >= 1 near the
+ * camera, so near runs of flat ground that cannot rise were never skipped. */
+#define RETRO_BILINEAR_OVER 0x1p-13f
+
 /* The first index n in [n, n_end) whose sample in this column may rise above y; n_end when
  * none may. The n-th sample is at distance dist[n] (mode lod), or n when dist is NULL (mode
  * exact: retro_skip_column). Every sample it skips has v <= y, so it cannot paint.
@@ -164,10 +179,9 @@ RETRO_HELPER int retro_skip_box_max(const retro_pyramid *p, int S, int I, int J,
  *    samples are exactly samples that would have painted nothing.
  * Bilinear (docs/EFFECTS.md) reads the cells floor(q - 1/2) and floor(q - 1/2) + 1 per axis, with
  * q - 1/2 = fl(qx - 0.5f) as retro_bilinear_height computes it (monotone in qx, so in e), so
- * the box grows by one cell per axis; its height, a convex combination of the four cells
- * rounded a few times, exceeds their maximum by far less than 1 (frame.c's hmax + 1 rests on
- * the same fact), so it is <= M + 1, and the row is computed from (float)(M + 1) through the
- * sample's own dh (retro_bilinear_dh, monotone) and row operations.
+ * the box grows by one cell per axis; its height is at most M + RETRO_BILINEAR_OVER (below),
+ * and the row is computed from that float through the sample's own dh (retro_bilinear_dh,
+ * monotone) and row operations.
  * Mode lod: a run is of indices [n, n1], whose distances dist[n] < .. < dist[n1] increase
  * (frame.c), so every distance the run samples lies in [d, d1] := [dist[n], dist[n1]], and
  * points 1 to 4 hold for those samples as they stand: 1 needs only that each sample's
@@ -228,7 +242,7 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
 #endif
             float fdh;
             if (bilinear) /* the sample's own dh of a height above any its rounding reaches */
-                fdh = retro_bilinear_dh((float)(M + 1), height);
+                fdh = retro_bilinear_dh((float)M + RETRO_BILINEAR_OVER, height);
             else
                 fdh = (float)((int64_t)M - height);
             const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;

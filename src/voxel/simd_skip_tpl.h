@@ -40,9 +40,10 @@ static inline void SIMD_NAME(skip_init)(SIMD_NAME(skip_t) *g, const retro_frame 
  * bound stays <= its y, no lane paints in [d, d1] and their y-buffers are unchanged there, so
  * the run is skipped for the whole group; each lane's proof holds alone, with its own y.
  * Bilinear and mode lod as in retro_skip_run: the box is of the floors of q - 1/2 computed as
- * sample() does, one cell wider, bounded by M + 1 through the sample's own dh (the double
- * difference: where bilinear_dh takes the float one it is the same value, and both are
- * monotone in the height, so that of M + 1 bounds every filtered height's); a run of lod
+ * sample() does, one cell wider, bounded by M + RETRO_BILINEAR_OVER (exact in float) through
+ * the sample's own dh (the double difference: where bilinear_dh takes the float one it is the
+ * same value, and both are monotone in the height, so that of the bound bounds every filtered
+ * height's); a run of lod
  * indices samples distances between dist[n] and dist[n1] only, and kd is indexed by distance.
  * Levels: up after a skip, down after a run some lane may paint in, and the probe gives up at
  * RETRO_PYR_LMIN or after RETRO_SKIP_GROUP_TRIES failing windows. */
@@ -96,8 +97,9 @@ RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAM
         const simd_i32 idx = v_add_i(v_add_i(v_mullo_i(v_srl_i(cj, L), v_set1_i(p->n[L])), v_srl_i(ci, L)),
                                      v_set1_i((int)(p->win[L] - base)));
         const simd_i32 M = v_gather_bytes_pad(base, idx);
-        /* bilinear: the sample's own dh (v_sub_f64) of M + 1, above any filtered height */
-        const simd_f32 dh = bilinear ? v_sub_f64(v_cvt_f(v_add_i(M, v_set1_i(1))), (double)f->height)
+        /* bilinear: the sample's own dh (v_sub_f64) of a height above any filtered one */
+        const simd_f32 dh = bilinear ? v_sub_f64(v_add_f(v_cvt_f(M), v_set1_f(RETRO_BILINEAR_OVER)),
+                                                 (double)f->height)
                                      : v_cvt_f(v_sub_i(M, k->height));
         const simd_f32 vf = v_max_f(v_add_f(v_mul_f(v_set1_f(f->kd[d]), dh), k->half_h),
                                     v_add_f(v_mul_f(v_set1_f(f->kd[d1]), dh), k->half_h));
