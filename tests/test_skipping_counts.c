@@ -60,7 +60,8 @@ static void counts_mode_fx(retro_mode mode, const char *what, const retro_map *m
     size_t n = (size_t)W * (size_t)H;
     uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     cr_assert(a && b);
-    retro_sample_counts s = count_fx(on, mode, 0, m, p, W, H, D, a, fx), t = count_fx(off, mode, 1, m, p, W, H, D, b, fx);
+    retro_sample_counts s = count_fx(on, mode, 0, m, p, W, H, D, a, fx);
+    retro_sample_counts t = count_fx(off, mode, 1, m, p, W, H, D, b, fx);
     cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the counting build's frames differ", what);
     cr_assert_eq(s.painting, t.painting, "%s: %llu samples paint with skipping, %llu without", what,
                  (unsigned long long)s.painting, (unsigned long long)t.painting);
@@ -142,8 +143,9 @@ Test(skipping, bilinear_flat_ground_skips)
 
 /* RETRO_BILINEAR_OVER's proof (hmax_pyramid.h) checked by brute force: filtered heights of
  * corners at most M, through the kernels' own retro_bilinear_height, at random weights and
- * at weights a few ulps from 0, 1/2 and 1, never exceed M + RETRO_BILINEAR_OVER, nor does their
- * rounded difference from a camera height exceed the bound's. (None of them exceeds M at all
+ * at weights as near 0, 1/2 and 1 as a position in the first cell allows (q = p + 1/2 is
+ * rounded, so 1 - 2^-24 becomes 0 and 1 - 2^-23 stays), never exceed M + RETRO_BILINEAR_OVER,
+ * nor does their rounded difference from a camera height exceed the bound's. (None of them exceeds M at all
  * here; the proof does not rule that out, so the margin stays.) */
 Test(skipping, bilinear_over_bound)
 {
