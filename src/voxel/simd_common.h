@@ -125,6 +125,13 @@ enum { RETRO_SIMD_SKIP_NEAR = 4, RETRO_SIMD_SKIP_FAR = 32 };
  * its colour among more. 4 measured faster than 2 and no slower than 8 (docs/KERNELS.md). */
 enum { RETRO_SIMD_PAINT_BATCH = 4 };
 
+/* Distances a group of modes exact and lod has loaded ahead of the one it projects (without
+ * bilinear): a step's loads issue before the paint branches of the steps before it, so when
+ * those mispredict the loads are already in flight. 3 and 4 measured faster than 1 and 2, 6
+ * no faster; with bilinear, whose samples hold seven vectors, more than 1 was slower
+ * (docs/KERNELS.md). */
+enum { RETRO_SIMD_AHEAD = 4 };
+
 /* Groups a strip of modes exact and lod renders before painting the sky above them row by row
  * (simd_strip_tpl.h, exact_run): a row's stores then cover up to this many groups' columns
  * side by side, and their final y-buffers stay on the stack (4 KiB at 16 lanes). */

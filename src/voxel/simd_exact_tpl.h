@@ -83,9 +83,9 @@ static inline simd_i32 SIMD_NAME(fog_colours)(simd_i32 c, int F, uint32_t sky)
  * Lanes past width start full (y = H), so they neither paint nor hold the group back. The n-th
  * distance is n, or dist[n] in mode lod (lod), where vcap is indexed by n as well. With skip,
  * the group probes the pyramid, every lane with its own y-buffer (simd_skip_tpl.h, on
- * simd_common.h's schedule), and jumps over the distances no lane can paint in; s then holds a distance the loop
- * no longer wants, and sn says which. With row stores the group leaves the sky to its strip:
- * *top receives its final y-buffer. */
+ * simd_common.h's schedule), and jumps over the distances no lane can paint in; s then holds
+ * distances the loop no longer wants, and sn says the first of them. With row stores the group
+ * leaves the sky to its strip: *top receives its final y-buffer. */
 RETRO_SIMD_INLINE void
 SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_NAME(consts) *k, int u0,
                        int width, const int pow2, const int packed, const int fog, const int skip, const int lod,
@@ -95,10 +95,14 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
     const int n_end = lod ? f->ndist : f->D;
     simd_f32 rx = v_load_first_f(f->rx + u0, width, live), ry = v_load_first_f(f->ry + u0, width, live);
     simd_i32 y = v_select_i(live, v_zero_i(), k->H);
-    SIMD_NAME(sample_t) s, s_d;
+    /* s[i] holds the sample of index sn + i, P indices loaded ahead (RETRO_SIMD_AHEAD) */
+    const int P = bilinear ? 1 : RETRO_SIMD_AHEAD;
+    SIMD_NAME(sample_t) s[RETRO_SIMD_AHEAD], s_d;
     /* mode lod: dist[n] exists for n < n_end only; a sample past it is loaded but never used */
 #define SIMD_DIST(n) (lod ? f->dist[(n) < n_end ? (n) : 1] : (n))
-    SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 ? SIMD_DIST(1) : 1, &s, pow2, packed, bilinear);
+#pragma GCC unroll 8
+    for (int i = 0; i < P; i++)
+        SIMD_NAME(sample)(f, sf, k, rx, ry, n_end > 1 + i ? SIMD_DIST(1 + i) : 1 + i, &s[i], pow2, packed, bilinear);
 #ifndef RETRO_SUBMISSION
     SIMD_NAME(skip_t) g;
     int probe = 1, batch = RETRO_SIMD_SKIP_NEAR; /* the next probe's index, the batch after it */
@@ -129,13 +133,20 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
         }
 #endif
         const int d = SIMD_DIST(n);
-        if (skip && sn != n)
-            SIMD_NAME(sample)(f, sf, k, rx, ry, d, &s, pow2, packed, bilinear);
-        simd_i32 v = SIMD_NAME(project)(&s, f->kd[d], k, bilinear);
-        s_d = s;
-        /* The next distance's loads issue before the paint branch, so they are in flight when
-         * it mispredicts. n + 1 = D samples a valid cell that is never used. */
-        SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + 1), &s, pow2, packed, bilinear);
+        if (skip && sn != n) { /* a skip: what was loaded ahead is of distances jumped over */
+#pragma GCC unroll 8
+            for (int i = 0; i < P; i++)
+                SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + i), &s[i], pow2, packed, bilinear);
+        }
+        simd_i32 v = SIMD_NAME(project)(&s[0], f->kd[d], k, bilinear);
+        s_d = s[0];
+        /* The loads of distance n + P issue before this step's paint branch, so they and those
+         * of the distances between are in flight when it mispredicts. An index at or past
+         * n_end samples a valid cell that is never used (SIMD_DIST keeps lod's in dist). */
+#pragma GCC unroll 8
+        for (int i = 0; i + 1 < P; i++)
+            s[i] = s[i + 1];
+        SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + P), &s[P - 1], pow2, packed, bilinear);
         sn = n + 1;
         const simd_mask up = v_igt(v, y);
         SIMD_COUNT_LANES(evaluated, width);
