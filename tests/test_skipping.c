@@ -242,10 +242,38 @@ Test(skipping, bilinear_flat_ground)
     rig_close(g);
 }
 
+/* The fact bilinear_dh rests on (simd_sample_tpl.h): for a binary32 hf and an integer height
+ * within 2^24, hf - (float)height rounded once equals the definition's (float)((double)hf -
+ * height) rounded twice, even where hf is so small that the double difference is inexact. hf
+ * runs over every binade a filtered height can take, subnormals included, with mantissas that
+ * put bits far below the height's. */
+Test(skipping, bilinear_float_difference)
+{
+    static const int heights[] = {0,   1,   -1,  2,   3,   -3,          127,         200,
+                                  255, 256, 511, 4095, (1 << 24) - 1, 1 << 24, -(1 << 24), -(1 << 24) + 1};
+    uint32_t s = 12345u;
+    long differ = 0, n = 0;
+    for (int e = 0; e < 136; e++) /* biased exponents 0 (subnormal) .. 135 (up to 2^9) */
+        for (int r = 0; r < 256; r++) {
+            s = s * 1664525u + 1013904223u;
+            const uint32_t mant = r < 4 ? (uint32_t[]){0, 1, 0x400000, 0x7fffff}[r] : s >> 9;
+            const uint32_t bits = (uint32_t)e << 23 | mant;
+            float hf;
+            memcpy(&hf, &bits, sizeof hf);
+            for (size_t k = 0; k < sizeof heights / sizeof heights[0]; k++) {
+                const float once = hf - (float)heights[k];
+                const float twice = (float)((double)hf - heights[k]);
+                differ += memcmp(&once, &twice, sizeof once) != 0;
+                n++;
+            }
+        }
+    cr_expect_eq(differ, 0, "%ld of %ld differences rounded once differ from the definition's", differ, n);
+}
+
 /* Bilinear's height difference (simd_sample_tpl.h, bilinear_dh): one float subtraction where
- * the camera height is within 2^24 and no filtered height lies in (0, 2^-5), double otherwise.
- * A map of zeros with isolated low cells gives filtered heights down to the product of two
- * tiny weights (the double path) beside exact zeros and ordinary values (the float path);
+ * the camera height is within 2^24, double otherwise. A map of zeros with isolated low cells
+ * gives filtered heights down to the product of two tiny weights, where the definition's
+ * difference is not exact in double and rounds twice, beside exact zeros and ordinary values;
  * camera heights on both sides of 2^24 switch the float path off and on. */
 Test(skipping, bilinear_height_difference)
 {

@@ -171,19 +171,17 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, co
 }
 
 /* Bilinear's Δ = (float)((double)hf - height) (docs/EFFECTS.md) by one float subtraction where
- * that is the same value, which is nearly always; else in double, two conversions each way.
- * Proof: hf >= 0 (products and sums of non-negative heights and weights). With
- * |height| <= 2^24, (float)height is exact. If hf = 0, both give -height, exact. If
- * hf >= 2^-5, hf is a multiple of 2^-28 (24 significant bits, exponent >= -5), so the exact
- * difference is a multiple of 2^-28 smaller than 2^24 + 256 < 2^25 in magnitude: 53 bits hold
- * it, the double subtraction is exact, and its conversion rounds the exact difference once to
- * nearest; the float subtraction of the exact operands hf and (float)height rounds that same
- * exact difference once to nearest. A lane with 0 < hf < 2^-5 (a filtered height that is
- * almost 0) sends the vector through double. */
+ * that is the same value: wherever |height| <= 2^24; else in double, two conversions each way.
+ * Proof: with |height| <= 2^24, (float)height is exact, so both compute from the same two
+ * binary32 operands hf and height. The float subtraction rounds their exact difference once to
+ * nearest. The definition rounds it to binary64 and then to binary32, and for a sum or
+ * difference of two binary32 values that double rounding gives the same result as one, since
+ * binary64's 53 bits are at least 2 x 24 + 1 (Figueroa, "When is double rounding innocuous?",
+ * 1995): however small hf is. skipping/bilinear_height_difference checks frames on both sides
+ * of 2^24 and with filtered heights just above 0. */
 RETRO_SIMD_INLINE simd_f32 SIMD_NAME(bilinear_dh)(simd_f32 hf, const retro_frame *f, const SIMD_NAME(consts) *k)
 {
-    const simd_mask tiny = v_mand(v_fgt(hf, v_zero_f()), v_flt(hf, v_set1_f(0x1p-5f)));
-    if (k->dh_f32 && !v_bits(tiny))
+    if (k->dh_f32)
         return v_sub_f(hf, k->fheight);
     return v_sub_f64(hf, (double)f->height);
 }
