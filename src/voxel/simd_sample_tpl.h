@@ -178,7 +178,8 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(course_project)(simd_i32 h, simd_f32 fd, co
  * difference of two binary32 values that double rounding gives the same result as one, since
  * binary64's 53 bits are at least 2 x 24 + 1 (Figueroa, "When is double rounding innocuous?",
  * 1995): however small hf is. skipping/bilinear_height_difference checks frames on both sides
- * of 2^24 and with filtered heights just above 0. */
+ * of 2^24 and with filtered heights just above 0, skipping/bilinear_float_difference the
+ * rounding fact itself. The skip probe's bound goes through here too (simd_skip_tpl.h). */
 RETRO_SIMD_INLINE simd_f32 SIMD_NAME(bilinear_dh)(simd_f32 hf, const retro_frame *f, const SIMD_NAME(consts) *k)
 {
     if (k->dh_f32)

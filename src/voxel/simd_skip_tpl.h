@@ -41,9 +41,9 @@ static inline void SIMD_NAME(skip_init)(SIMD_NAME(skip_t) *g, const retro_frame 
  * the run is skipped for the whole group; each lane's proof holds alone, with its own y.
  * Bilinear and mode lod as in retro_skip_run: the box is of the floors of q - 1/2 computed as
  * sample() does, one cell wider, bounded by M + RETRO_BILINEAR_OVER (exact in float) through
- * the sample's own dh (the double difference, or the float one that equals it, below: where
- * bilinear_dh takes the float one it is the same value, and both are monotone in the height,
- * so that of the bound bounds every filtered height's); a run of lod
+ * the sample's own dh (bilinear_dh, whose float subtraction simd_sample_tpl.h proves equal to
+ * the definition's double one; it is monotone in the height, so the bound's dh bounds every
+ * filtered height's); a run of lod
  * indices samples distances between dist[n] and dist[n1] only, and kd is indexed by distance.
  * Levels: up after a skip, down after a run some lane may paint in, and the probe gives up at
  * RETRO_PYR_LMIN or after RETRO_SKIP_GROUP_TRIES failing windows. */
@@ -97,15 +97,10 @@ RETRO_SIMD_INLINE int SIMD_NAME(skip_probe)(const retro_frame *f, const SIMD_NAM
         const simd_i32 idx = v_add_i(v_add_i(v_mullo_i(v_srl_i(cj, L), v_set1_i(p->n[L])), v_srl_i(ci, L)),
                                      v_set1_i((int)(p->win[L] - base)));
         const simd_i32 M = v_gather_bytes_pad(base, idx);
-        /* bilinear: the sample's own dh (v_sub_f64) of a height above any filtered one. With
-         * |height| <= 2^24 (dh_f32) the float subtraction gives the same value: over is a
-         * multiple of 2^-13 below 2^8, so over - height is a multiple of 2^-13 below 2^25 in
-         * magnitude, 38 bits that the double subtraction holds exactly; its conversion and the
-         * float subtraction of the exact operands both round that value once to nearest. */
-        const simd_f32 over = v_add_f(v_cvt_f(M), v_set1_f(RETRO_BILINEAR_OVER));
-        const simd_f32 dh = !bilinear   ? v_cvt_f(v_sub_i(M, k->height))
-                            : k->dh_f32 ? v_sub_f(over, k->fheight)
-                                        : v_sub_f64(over, (double)f->height);
+        /* bilinear: the sample's own dh, through the same bilinear_dh, of a height above any
+         * filtered one (M + RETRO_BILINEAR_OVER is exact in float) */
+        const simd_f32 dh = bilinear ? SIMD_NAME(bilinear_dh)(v_add_f(v_cvt_f(M), v_set1_f(RETRO_BILINEAR_OVER)), f, k)
+                                     : v_cvt_f(v_sub_i(M, k->height));
         const simd_f32 vf = v_max_f(v_add_f(v_mul_f(v_set1_f(f->kd[d]), dh), k->half_h),
                                     v_add_f(v_mul_f(v_set1_f(f->kd[d1]), dh), k->half_h));
         /* a lane stays below when its box fits and !(vf >= need), the sample kernel's test */
