@@ -197,6 +197,14 @@ def bench_blocks(md, raw, raw_json=None):
     best = min(plain, key=lambda kn: geo([ms(kn[0], kn[1], s) for s in scenes]))
     best_ms = [ms(best[0], best[1], s) for s in scenes]
     verdict = lambda ok: "met" if ok else "**not met**"
+
+    def omp_verdict(r):
+        # the target is on the geometric mean; the per-scene count says how near it is
+        k = sum(x >= 1.8 for x in r)
+        if geo(r) >= 1.8:
+            return "met" if k == len(r) else "met on average, not on every scene"
+        return "**not met**" + (f" on average (met on {k} of {len(r)} scenes)" if k else "")
+
     tl = ["| target | measured in this run | verdict |", "|---|---|---|",
           f"| `ybuffer` ≥ 25× `naive`, mode exact, default scenes | "
           + ", ".join(f"{fmt(x)} on {s}" for x, s in zip(yb, default))
@@ -205,7 +213,7 @@ def bench_blocks(md, raw, raw_json=None):
           f"({fmt(min(simd_r), '')}–{fmt(max(simd_r))} per scene) | {verdict(min(simd_r) >= 3)} |",
           f"| `omp` on 2 cores ≥ 1.8× the best single-thread kernel | {fmt(geo(omp_r))} over "
           f"`{best1}` ({fmt(min(omp_r), '')}–{fmt(max(omp_r))} per scene) | "
-          f"{verdict(geo(omp_r) >= 1.8)}{'' if min(omp_r) >= 1.8 else ' on average, not on every scene'} |",
+          f"{omp_verdict(omp_r)} |",
           f"| best kernel < 0.3 ms per frame, 640×480, D 800 | `{best[0]}`, {best[1]} "
           f"thread{'s' if best[1] > 1 else ''}: {min(best_ms):.3f}–{max(best_ms):.3f} ms | "
           f"{verdict(max(best_ms) < 0.3)} |"]

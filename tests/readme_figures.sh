@@ -123,6 +123,36 @@ awk '{ print } /^The JSON.s `library_build_type/ && !done { print "\nRe-timed, o
   "$run/BENCH.md" >"$run/b.tmp" && mv "$run/b.tmp" "$run/BENCH.md"
 gen && expect "4 of its 30 blocks of cases timed again after a slow checkpoint or a spread case, in 2 rounds, 1 still disturbed at the end" \
   "the re-timing is not quoted in the README"
+# The omp target's verdict is on the geometric mean of the per-scene ratios over the best
+# single-thread kernel, and says on how many scenes it holds: omp's 2-thread row is set to
+# simd-avx512's 1-thread times divided by one factor per scene.
+ompdiv() { # F1 .. F6
+  note ""
+  awk -v f="$*" 'BEGIN { n = split(f, F, " ") }
+    /^## / { exact = /^## Mode exact, 640×480, D 800/ }
+    exact && /^\| `simd-avx512` \| 1 \|/ { split($0, S, " [|] ") }
+    exact && /^\| `omp` \| 2 \|/ {
+      m = split($0, O, " [|] ")
+      for (i = 1; i <= n; i++) O[i + 2] = sprintf("%.3f", S[i + 2] / F[i])
+      line = O[1]; for (i = 2; i <= m; i++) line = line " | " O[i]
+      $0 = line }
+    { print }' results/BENCH.md >"$run/BENCH.md"
+}
+expect_omp() { # VERDICT WHAT
+  line=$(grep -F '| `omp` on 2 cores ≥ 1.8× the best single-thread kernel |' "$tmp/README.md")
+  case "$line" in
+    *"per scene) | $1 |") ;;
+    *) echo "FAIL: $2 (the README's row: $line)"; exit 1 ;;
+  esac
+}
+ompdiv 2 2 2 2 2 2
+gen && expect_omp "met" "2x on every scene is not called met"
+ompdiv 2 2 2 2 2 1.5
+gen && expect_omp "met on average, not on every scene" "a geometric mean above 1.8x with one scene under is not qualified"
+ompdiv 1.7 1.7 1.7 1.7 1.7 2
+gen && expect_omp "**not met** on average (met on 1 of 6 scenes)" "a geometric mean under 1.8x is not called not met"
+ompdiv 1.5 1.5 1.5 1.5 1.5 1.5
+gen && expect_omp "**not met**" "1.5x on every scene is not called plainly not met"
 # Whether the kernels changed after the published run (bench:since), from git: in a repository of
 # its own, one commit after the run's touching src/ is named; one touching docs/ only is not.
 repo="$tmp/repo"
@@ -150,4 +180,4 @@ echo d >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm ke
 if python3 scripts/readme-figures.py --check "$repo/results" "$repo/README.md" >/dev/null; then
   echo "FAIL: a README that misses a kernel commit after its run passes the check"; exit 1
 fi
-echo "ok: README figures match the committed run, and a changed figure is caught; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run are named"
+echo "ok: README figures match the committed run, and a changed figure is caught; the omp target's verdict follows its geometric mean; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run are named"
