@@ -200,10 +200,10 @@ def bench_blocks(md, raw, raw_json=None):
 
     def omp_verdict(r):
         # the target is on the geometric mean; the per-scene count says how near it is
-        k = sum(x >= 1.8 for x in r)
-        if geo(r) >= 1.8:
-            return "met" if k == len(r) else "met on average, not on every scene"
-        return "**not met**" + (f" on average (met on {k} of {len(r)} scenes)" if k else "")
+        k, ok = sum(x >= 1.8 for x in r), geo(r) >= 1.8
+        if k in (0, len(r)):
+            return verdict(ok)
+        return verdict(ok) + (" on average, not on every scene" if ok else f" on average (met on {k} of {len(r)} scenes)")
 
     tl = ["| target | measured in this run | verdict |", "|---|---|---|",
           f"| `ybuffer` ≥ 25× `naive`, mode exact, default scenes | "

@@ -127,7 +127,6 @@ gen && expect "4 of its 30 blocks of cases timed again after a slow checkpoint o
 # single-thread kernel, and says on how many scenes it holds: omp's 2-thread row is set to
 # simd-avx512's 1-thread times divided by one factor per scene.
 ompdiv() { # F1 .. F6
-  note ""
   awk -v f="$*" 'BEGIN { n = split(f, F, " ") }
     /^## / { exact = /^## Mode exact, 640×480, D 800/ }
     exact && /^\| `simd-avx512` \| 1 \|/ { split($0, S, " [|] ") }
