@@ -296,6 +296,11 @@ bench: deps ## time every kernel (mode exact also with skipping off), scene and 
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) $(RESULTS) $(BUILD)/bench-charts.gp \
 	  $(if $(filter-out 0,$(QUICK)),--quick) --no-skip $(BENCH_ARGS)
 	$(Q)sh scripts/skip-columns.sh $(RETRO) $(RESULTS)
+
+.PHONY: study-replay
+study-replay: deps ## where a skipping frame's time goes, by replaying probes and stores: RESULTS/study-replay.md (docs/SKIPPING.md)
+	$(Q)mkdir -p $(RESULTS)
+	$(Q)sh scripts/study-replay.sh --shared $(SHARED) -o $(RESULTS)/study-replay.md
 # --- end of benchmark block ---------------------------------------------------------------
 
 ACCURACY_ARGS ?=

@@ -1,7 +1,8 @@
 #!/bin/sh
-# make publish: copies the last full benchmark run (and the accuracy run and demo pictures, if
-# any) from the runs' folder into the committed results/, then rewrites the README's figures
-# from them. The only way results/ changes, so a quick or partial run never replaces it.
+# make publish: copies the last full benchmark run (and the accuracy run, the replay study and
+# demo pictures, if any) from the runs' folder into the committed results/, then rewrites the
+# README's figures from them. The only way results/ changes, so a quick or partial run never
+# replaces it.
 # usage: publish.sh RUNS RESULTS README
 set -eu
 runs=$1
@@ -26,7 +27,7 @@ mkdir -p "$dest"
 for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distance.svg \
   bench-speedup.png bench-resolution.png bench-distance.png \
   bench-mesh-resolution.svg bench-mesh-distance.svg bench-mesh-resolution.png bench-mesh-distance.png \
-  skip-columns.csv skip-columns.txt skip-columns.svg skip-columns.png; do
+  skip-columns.csv skip-columns.txt skip-columns.svg skip-columns.png study-replay.md; do
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
 if [ -f "$runs/ACCURACY.md" ]; then
