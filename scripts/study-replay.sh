@@ -100,6 +100,9 @@ EOF
       n=$("$study" render "$@" -k simd-avx512 --time "$frames" --no-skip 2>&1 | median)
       o=$("$study" render "$@" -k omp --threads 2 --time "$frames" 2>&1 | median)
       m=$("$study" render "$@" -k omp --threads 2 --time "$frames" --no-skip 2>&1 | median)
+      for t in "$a" "$b" "$s" "$n" "$o" "$m"; do
+        case $t in ''|*[!0-9.]*) die "$name: a timed render printed no median" ;; esac
+      done
       echo "$wh $name $evaluated $total $ideal $a $b $s $n $o $m" >>"$raw"
       i=$((i + 1))
     done
