@@ -58,8 +58,23 @@ else
   echo "study-replay: $course absent: the course scenes are left out" >&2
 fi
 
-median() { grep -o 'median [0-9.]*' | cut -d' ' -f2; }
 raw=$tmp/raw.txt
+# frame STUDY RENDER-ARGS: simd-avx512's frame with RETRO_STUDY=STUDY into $tmp/STUDY.ppm (plain
+# when empty); the switch needs frame 0 recorded, so a study frame is the second of two.
+frame() {
+  st=$1
+  shift
+  RETRO_STUDY=$st "$study" render "$@" -k simd-avx512 ${st:+--time 2} -o "$tmp/${st:-plain}.ppm" \
+    >/dev/null 2>"$tmp/err" || die "$name: $(tail -n 1 "$tmp/err")"
+}
+# timed STUDY RENDER-ARGS: appends the median ms per frame of a timed run to the round's row
+timed() {
+  st=$1
+  shift
+  ms=$(RETRO_STUDY=$st "$study" render "$@" --time "$frames" 2>&1 | grep -o 'median [0-9.]*' | cut -d' ' -f2)
+  case $ms in ''|*[!0-9.]*) die "$name: a timed render printed no median" ;; esac
+  printf ' %s' "$ms" >>"$raw"
+}
 : >"$raw"
 for size in "640x480 800 100" "1920x1080 4000 30"; do
   set -- $size
@@ -71,11 +86,9 @@ for size in "640x480 800 100" "1920x1080 4000 30"; do
     echo "study-replay: $name at ${wh}, D $D: checking, then $rounds rounds" >&2
     # shellcheck disable=SC2086
     set -- "$map" $pose -s "$wh" -d "$D"
-    "$study" render "$@" -k simd-avx512 -o "$tmp/plain.ppm" 2>"$tmp/err" || die "$name: $(tail -n 1 "$tmp/err")"
-    RETRO_STUDY=probes "$study" render "$@" -k simd-avx512 --time 2 -o "$tmp/probes.ppm" >/dev/null 2>"$tmp/err" ||
-      die "$name: $(tail -n 1 "$tmp/err")"
-    RETRO_STUDY=stores "$study" render "$@" -k simd-avx512 --time 2 -o "$tmp/stores.ppm" >/dev/null 2>"$tmp/err" ||
-      die "$name: $(tail -n 1 "$tmp/err")"
+    frame "" "$@"
+    frame probes "$@"
+    frame stores "$@"
     cmp -s "$tmp/plain.ppm" "$tmp/probes.ppm" || die "$name: free probes changed the frame"
     python3 - "$tmp/plain.ppm" "$tmp/stores.ppm" <<'EOF' || die "$name: stores only covered other pixels"
 import sys
@@ -94,16 +107,14 @@ EOF
     [ -n "$evaluated" ] && [ -n "$total" ] && [ -n "$ideal" ] || die "$name: retro render --stats printed no counts"
     i=0
     while [ $i -lt "$rounds" ]; do
-      a=$("$study" render "$@" -k simd-avx512 --time "$frames" 2>&1 | median)
-      b=$(RETRO_STUDY=probes "$study" render "$@" -k simd-avx512 --time "$frames" 2>&1 | median)
-      s=$(RETRO_STUDY=stores "$study" render "$@" -k simd-avx512 --time "$frames" 2>&1 | median)
-      n=$("$study" render "$@" -k simd-avx512 --time "$frames" --no-skip 2>&1 | median)
-      o=$("$study" render "$@" -k omp --threads 2 --time "$frames" 2>&1 | median)
-      m=$("$study" render "$@" -k omp --threads 2 --time "$frames" --no-skip 2>&1 | median)
-      for t in "$a" "$b" "$s" "$n" "$o" "$m"; do
-        case $t in ''|*[!0-9.]*) die "$name: a timed render printed no median" ;; esac
-      done
-      echo "$wh $name $evaluated $total $ideal $a $b $s $n $o $m" >>"$raw"
+      printf '%s' "$wh $name $evaluated $total $ideal" >>"$raw"
+      timed "" "$@" -k simd-avx512
+      timed probes "$@" -k simd-avx512
+      timed stores "$@" -k simd-avx512
+      timed "" "$@" -k simd-avx512 --no-skip
+      timed "" "$@" -k omp --threads 2
+      timed "" "$@" -k omp --threads 2 --no-skip
+      echo >>"$raw"
       i=$((i + 1))
     done
   done
@@ -117,9 +128,14 @@ for l in open('/proc/cpuinfo'):
     k, _, v = l.partition(':')
     info.setdefault(k.strip(), v.strip())
 cpu = f"{info.get('model name', platform.machine())}, family {info.get('cpu family', '?')} model {info.get('model', '?')}"
+# the rounds of each (size, scene), in the order they ran: their counts, and per timing its rounds
+cells = {}
+for r in rows:
+    c = cells.setdefault((r[0], r[1]), {'counts': (int(r[2]), int(r[3]), float(r[4])), 't': [[] for _ in range(6)]})
+    for k in range(6):
+        c['t'][k].append(float(r[5 + k]))
 # noise: each cell's rounds, (max - min) / median; the run is flagged when their median passes 10%
-spreads = [(max(v) - min(v)) / st.median(v) for key in dict.fromkeys((r[0], r[1]) for r in rows)
-           for v in ([float(r[k]) for r in rows if (r[0], r[1]) == key] for k in range(5, 11))]
+spreads = [(max(v) - min(v)) / st.median(v) for c in cells.values() for v in c['t']]
 noise = st.median(spreads)
 print(f"Replay study of {sys.argv[2]}, {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, {cpu}, "
       f"{os.cpu_count()} CPUs; medians of {sys.argv[3]} interleaved rounds, ms per frame. Spread of a cell's "
@@ -127,13 +143,10 @@ print(f"Replay study of {sys.argv[2]}, {time.strftime('%Y-%m-%d %H:%M UTC', time
 if noise > 0.10:
     print("> **Noisy run**: the median spread passes 10%; do not quote it.\n")
 gm = lambda v: math.exp(sum(map(math.log, v)) / len(v))
-for size in dict.fromkeys(r[0] for r in rows):
-    names = list(dict.fromkeys(r[1] for r in rows if r[0] == size))
-    t, med = {}, {}
-    for name in names:
-        rr = [r for r in rows if r[0] == size and r[1] == name]
-        t[name] = [[float(r[k]) for r in rr] for k in range(5, 11)]
-        med[name] = [st.median(x) for x in t[name]]
+for size in dict.fromkeys(size for size, _ in cells):
+    names = [name for sz, name in cells if sz == size]
+    t = {name: cells[size, name]['t'] for name in names}
+    med = {name: [st.median(x) for x in t[name]] for name in names}
     print(f"**{size}**, ms per frame: `simd-avx512` on one thread with skipping, with free probes, stores only and "
           f"without skipping; `omp` on two threads with and without skipping.\n")
     print("| scene | skipping | free probes | stores only | no skipping | omp, skipping | omp, no skipping |")
@@ -153,8 +166,7 @@ for size in dict.fromkeys(r[0] for r in rows):
     cols = {k: [] for k in ('skip', 'free', 'stores', 'walk', 'walk_all', 'ideal', 't_ideal', 'speedup', 'omp_ideal',
                             'omp_ratio')}
     for name in names:
-        rr = [r for r in rows if r[0] == size and r[1] == name]
-        ev, total, ideal = int(rr[0][2]), int(rr[0][3]), float(rr[0][4])
+        ev, total, ideal = cells[size, name]['counts']
         skip, free, stores, noskip, omp, omp_noskip = med[name]
         x = t[name]
         ratio = lambda a, b: st.median(p / q for p, q in zip(x[a], x[b]))
@@ -169,8 +181,8 @@ for size in dict.fromkeys(r[0] for r in rows):
         for k in cols:
             cols[k].append(v[k])
         print(f"| {name} | {100 * ev / total:.1f}% | {ideal:.1f}% | {v['skip']:.2f}x | {v['free']:.2f}x | "
-              f"{v['stores']:.2f}x | {v['walk']:.1f} | {v['walk_all']:.1f} | {t_ideal:.3f} | {v['ideal']:.2f}x | {v['speedup']:.2f}x | {v['omp_ideal']:.3f} | "
-              f"{v['omp_ratio']:.2f}x |")
+              f"{v['stores']:.2f}x | {v['walk']:.1f} | {v['walk_all']:.1f} | {t_ideal:.3f} | {v['ideal']:.2f}x | "
+              f"{v['speedup']:.2f}x | {v['omp_ideal']:.3f} | {v['omp_ratio']:.2f}x |")
     g = {k: gm(v) for k, v in cols.items()}
     print(f"| geomean | | | {g['skip']:.2f}x | {g['free']:.2f}x | {g['stores']:.2f}x | {g['walk']:.1f} | "
           f"{g['walk_all']:.1f} | {g['t_ideal']:.3f} | {g['ideal']:.2f}x | {g['speedup']:.2f}x | "
