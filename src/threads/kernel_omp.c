@@ -9,13 +9,16 @@
  * every column they hold exactly the values the single-thread reference has there.
  *
  * Schedule: chunks of 64 whole columns with edges on out's 64-byte lines (column_chunks.h),
- * handed out monotonic-dynamically. Chosen by measurement over 60 seeded poses of the default
- * scenes (docs/KERNELS.md, "Load balance"): 64 columns and two static halves were within noise
- * on average, 64 held up better on the worst poses, and chunks of 16-32 lost to the cost each
- * chunk of a strip carries (its constants, its first distances) and guided scheduling gained
- * nothing. RETRO_OMP_CHUNK overrides it. */
+ * one run of adjacent chunks per thread, the same every frame, with a thread that finishes its
+ * run taking chunks from the back of another (chunk_runs.h): so a thread mostly stores into
+ * the lines it stored into the frame before, which are still in its core's cache. Mode course
+ * shares one run front to back instead, which keeps each thread's chunks in increasing order.
+ * The chunk size was chosen by measurement over 60 seeded poses of the default scenes
+ * (docs/KERNELS.md, "Load balance"): chunks of 16-32 lost to the cost each chunk of a strip
+ * carries (its constants, its first distances). RETRO_OMP_CHUNK overrides it. */
 #include <omp.h>
 
+#include "chunk_runs.h"
 #include "env.h"
 #include "column_chunks.h"
 #include "kernels.h"
@@ -44,6 +47,9 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
     const retro_column_chunks cc = retro_column_chunks_of(f, chunk_columns());
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map */
     retro_pool_enter(pool);
+    const int runs = f->mode == RETRO_MODE_COURSE ? 1 : threads;
+    retro_chunk_run run[RETRO_MAX_THREADS];
+    retro_chunk_runs_init(run, runs, cc.count);
 #pragma omp parallel num_threads(threads)
     {
         int t = omp_get_thread_num();
@@ -51,12 +57,7 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
         float *qx = retro_pool_qx(pool, t), *qy = retro_pool_qy(pool, t);
         retro_course_start(f, qx, qy);
         int at = 0;
-        /* monotonic: each thread gets its chunks in increasing order, so it only moves forward.
-         * Plain dynamic is nonmonotonic since OpenMP 5.0, and libomp (clang) hands chunks out
-         * in any order (static stealing): a thread could then render an earlier chunk with
-         * accumulators already past it. */
-#pragma omp for schedule(monotonic: dynamic, 1) nowait
-        for (int c = 0; c < cc.count; c++) {
+        for (int c; (c = retro_chunk_next(run, runs, t)) >= 0;) {
             int u0, u1;
             retro_column_chunk(&cc, c, &u0, &u1);
             retro_course_advance(f, qx, qy, at, u0);

@@ -4,15 +4,16 @@
  * (pt_pool.h), started on the first frame and kept until retro_ctx_free(), so a frame pays a
  * wake-up, not a thread start: the submission's run-to-run spread came from starting them.
  *
- * Threads take chunks of columns from an atomic counter, so chunks reach each thread in
- * increasing order and mode course's per-thread accumulators only move forward
- * (retro_course_advance replays the columns other threads took, addition by addition). A
- * pool with fewer threads than asked (or none) is still exact: the counter hands every chunk
- * to whoever asks. Scratch lives in the context; the frame allocates nothing once the context
+ * Threads take chunks of columns as omp's do (chunk_runs.h): one run of adjacent chunks per
+ * thread, the same every frame, and the back of another run once a thread's own is done; in
+ * mode course one shared run front to back, so chunks reach each thread in increasing order
+ * and its accumulators only move forward (retro_course_advance replays the columns other
+ * threads took, addition by addition). A pool with fewer threads than asked (or none) is
+ * still exact: a thread goes on to every other run, so every chunk goes to whoever asks. Scratch lives in the context; the frame allocates nothing once the context
  * has grown. The strip is the frame's (retro_frame.strip, chosen by frame setup). */
-#include <stdatomic.h>
 #include <stdlib.h>
 
+#include "chunk_runs.h"
 #include "column_chunks.h"
 #include "env.h"
 #include "hmax_cache.h"
@@ -24,7 +25,8 @@
 
 typedef struct {
     const retro_frame *f;
-    atomic_int next; /* next chunk to hand out */
+    retro_chunk_run run[RETRO_PT_MAX_THREADS];
+    int runs;
     retro_column_chunks chunks;
     float *scratch; /* thread t's accumulators at 2t and 2t + 1 strides */
     size_t stride;
@@ -37,10 +39,7 @@ static void pt_task(void *arg, int t)
     float *qx = job->scratch + 2 * (size_t)t * job->stride, *qy = qx + job->stride;
     retro_course_start(f, qx, qy);
     int at = 0;
-    for (;;) {
-        int c = atomic_fetch_add(&job->next, 1);
-        if (c >= job->chunks.count)
-            break;
+    for (int c; (c = retro_chunk_next(job->run, job->runs, t)) >= 0;) {
         int u0, u1;
         retro_column_chunk(&job->chunks, c, &u0, &u1);
         retro_course_advance(f, qx, qy, at, u0);
@@ -124,7 +123,8 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    pt_job job = {.f = f, .chunks = retro_column_chunks_of(f, PT_CHUNK), .scratch = rc->tscratch, .stride = stride};
-    atomic_init(&job.next, 0);
+    pt_job job = {.f = f, .runs = f->mode == RETRO_MODE_COURSE ? 1 : T, .chunks = retro_column_chunks_of(f, PT_CHUNK),
+                  .scratch = rc->tscratch, .stride = stride};
+    retro_chunk_runs_init(job.run, job.runs, job.chunks.count);
     retro_pt_pool_run(pool, pt_task, &job);
 }

@@ -14,7 +14,7 @@ typedef void (*retro_pt_task)(void *arg, int t);
 /* A pool for `threads` threads in all (the caller and threads - 1 workers, at most
  * RETRO_PT_MAX_THREADS), or NULL when out of memory. It may hold fewer workers than asked,
  * none when this program is linked without pthreads (retro_pt_available); the task then
- * runs on fewer threads, which the kernels' shared chunk counter makes correct. */
+ * runs on fewer threads, which the kernels' chunk runs make correct (chunk_runs.h). */
 retro_pt_pool *retro_pt_pool_new(int threads);
 /* The threads a task runs on: 1 + the workers that started. */
 int retro_pt_pool_threads(const retro_pt_pool *p);

@@ -1,0 +1,72 @@
+/* Who renders which column chunk (column_chunks.h) in the threaded kernels, so that a thread
+ * stores into the same lines of out from one frame to the next.
+ *
+ * A 640x480 frame is 1.2 MB: it fits one core's L2. When each frame hands the chunks to
+ * whichever thread asks first, a chunk's lines are often in the other core's cache from the
+ * last frame, and every store first fetches its line from there (docs/KERNELS.md, "Load
+ * balance"). So the chunks are cut into one run of adjacent chunks per thread, the same runs
+ * every frame: thread t takes its run front to back, and a thread whose run is empty takes
+ * chunks from the back of another run, the furthest from where that run's owner is. Only the
+ * chunks taken that way change hands between frames.
+ *
+ * Mode course's accumulators only move forward (kernel_omp.c), and a chunk taken from the back
+ * of a run may lie behind the thief's last chunk, so in mode course every thread takes from
+ * one shared run front to back: the chunks reach each thread in increasing order. */
+#ifndef RETRO_CHUNK_RUNS_H
+#define RETRO_CHUNK_RUNS_H
+
+#include <stdatomic.h>
+#include <stdint.h>
+
+/* One run: chunks [front, back), packed as front | back << 32 so one compare-and-swap takes a
+ * chunk from either end. On its own 64-byte line: the owners update theirs on every chunk. */
+typedef struct {
+    _Alignas(64) _Atomic uint64_t span;
+} retro_chunk_run;
+
+static inline uint64_t retro_chunk_span(uint32_t front, uint32_t back)
+{
+    return (uint64_t)front | (uint64_t)back << 32;
+}
+
+/* Cuts chunks [0, count) into `runs` runs of adjacent chunks, as equal as counts allow, run r
+ * before run r + 1. Before the threads start: they see the spans through the fork (OpenMP)
+ * or the pool's start (pt_pool.c). */
+static inline void retro_chunk_runs_init(retro_chunk_run *run, int runs, int count)
+{
+    for (int r = 0; r < runs; r++) {
+        uint32_t lo = (uint32_t)((int64_t)count * r / runs), hi = (uint32_t)((int64_t)count * (r + 1) / runs);
+        atomic_init(&run[r].span, retro_chunk_span(lo, hi));
+    }
+}
+
+/* The next chunk of run r, from its front (front) or its back (!front), or -1 when it is
+ * empty. */
+static inline int retro_chunk_run_take(retro_chunk_run *run, int front)
+{
+    uint64_t s = atomic_load_explicit(&run->span, memory_order_relaxed);
+    for (;;) {
+        const uint32_t lo = (uint32_t)s, hi = (uint32_t)(s >> 32);
+        if (lo >= hi)
+            return -1;
+        const uint64_t next = front ? retro_chunk_span(lo + 1, hi) : retro_chunk_span(lo, hi - 1);
+        if (atomic_compare_exchange_weak_explicit(&run->span, &s, next, memory_order_relaxed,
+                                                  memory_order_relaxed))
+            return (int)(front ? lo : hi - 1);
+    }
+}
+
+/* Thread t's next chunk among `runs` runs (runs == 1: the one shared run, front to back), or
+ * -1 when every run is empty. After its own run, t takes from the back of the others, nearest
+ * first in t + 1, t + 2, ... order. */
+static inline int retro_chunk_next(retro_chunk_run *run, int runs, int t)
+{
+    if (runs == 1)
+        return retro_chunk_run_take(&run[0], 1);
+    int c = retro_chunk_run_take(&run[t % runs], 1);
+    for (int i = 1; c < 0 && i < runs; i++)
+        c = retro_chunk_run_take(&run[(t + i) % runs], 0);
+    return c;
+}
+
+#endif
