@@ -126,5 +126,6 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
     pt_job job = {.f = f, .runs = f->mode == RETRO_MODE_COURSE ? 1 : T, .chunks = retro_column_chunks_of(f, PT_CHUNK),
                   .scratch = rc->tscratch, .stride = stride};
     retro_chunk_runs_init(job.run, job.runs, job.chunks.count);
+    retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map, as omp's */
     retro_pt_pool_run(pool, pt_task, &job);
 }
