@@ -1,7 +1,8 @@
 /* Who renders which column chunk (column_chunks.h) in the threaded kernels, so that a thread
  * stores into the same lines of out from one frame to the next.
  *
- * A 640x480 frame is 1.2 MB: it fits one core's L2. When each frame hands the chunks to
+ * A 640x480 frame is 1.2 MB, within one core's L2 on recent server cores (2 MB on the Xeon of
+ * the published run). When each frame hands the chunks to
  * whichever thread asks first, a chunk's lines are often in the other core's cache from the
  * last frame, and every store first fetches its line from there (docs/KERNELS.md, "Load
  * balance"). So the chunks are cut into one run of adjacent chunks per thread, the same runs
@@ -18,6 +19,8 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
+#include "kernels.h"
+
 /* One run: chunks [front, back), packed as front | back << 32 so one compare-and-swap takes a
  * chunk from either end. On its own 64-byte line: the owners update theirs on every chunk. */
 typedef struct {
@@ -27,6 +30,13 @@ typedef struct {
 static inline uint64_t retro_chunk_span(uint32_t front, uint32_t back)
 {
     return (uint64_t)front | (uint64_t)back << 32;
+}
+
+/* How many runs frame f's `threads` threads take their chunks from: one, shared, in mode
+ * course; else one each. */
+static inline int retro_chunk_runs_for(const retro_frame *f, int threads)
+{
+    return f->mode == RETRO_MODE_COURSE ? 1 : threads;
 }
 
 /* Cuts chunks [0, count) into `runs` runs of adjacent chunks, as equal as counts allow, run r

@@ -47,7 +47,7 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
     const retro_column_chunks cc = retro_column_chunks_of(f, chunk_columns());
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map */
     retro_pool_enter(pool);
-    const int runs = f->mode == RETRO_MODE_COURSE ? 1 : threads;
+    const int runs = retro_chunk_runs_for(f, threads);
     retro_chunk_run run[RETRO_MAX_THREADS];
     retro_chunk_runs_init(run, runs, cc.count);
 #pragma omp parallel num_threads(threads)

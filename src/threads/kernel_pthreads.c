@@ -9,8 +9,9 @@
  * mode course one shared run front to back, so chunks reach each thread in increasing order
  * and its accumulators only move forward (retro_course_advance replays the columns other
  * threads took, addition by addition). A pool with fewer threads than asked (or none) is
- * still exact: a thread goes on to every other run, so every chunk goes to whoever asks. Scratch lives in the context; the frame allocates nothing once the context
- * has grown. The strip is the frame's (retro_frame.strip, chosen by frame setup). */
+ * still exact: the runs are cut for the threads that started. Scratch lives in the context;
+ * the frame allocates nothing once the context has grown. The strip is the frame's
+ * (retro_frame.strip, chosen by frame setup). */
 #include <stdlib.h>
 
 #include "chunk_runs.h"
@@ -123,7 +124,7 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    pt_job job = {.f = f, .runs = f->mode == RETRO_MODE_COURSE ? 1 : T, .chunks = retro_column_chunks_of(f, PT_CHUNK),
+    pt_job job = {.f = f, .runs = retro_chunk_runs_for(f, T), .chunks = retro_column_chunks_of(f, PT_CHUNK),
                   .scratch = rc->tscratch, .stride = stride};
     retro_chunk_runs_init(job.run, job.runs, job.chunks.count);
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map, as omp's */
