@@ -2,13 +2,13 @@
  * stores into the same lines of out from one frame to the next.
  *
  * A 640x480 frame is 1.2 MB, within one core's L2 on recent server cores (2 MB on the Xeon of
- * the published run). When each frame hands the chunks to
- * whichever thread asks first, a chunk's lines are often in the other core's cache from the
- * last frame, and every store first fetches its line from there (docs/KERNELS.md, "Load
- * balance"). So the chunks are cut into one run of adjacent chunks per thread, the same runs
- * every frame: thread t takes its run front to back, and a thread whose run is empty takes
- * chunks from the back of another run, the furthest from where that run's owner is. Only the
- * chunks taken that way change hands between frames.
+ * the published run). When each frame hands the chunks to whichever thread asks first, a
+ * chunk's lines are often in the other core's cache from the frame before, and a store there
+ * first fetches its line from that cache (docs/KERNELS.md, "Load balance"). So the chunks are
+ * cut into one run of adjacent chunks per thread, the same runs every frame: thread t takes its
+ * run front to back, and a thread whose run is empty takes chunks from the back of another
+ * run, the furthest from where that run's owner is. Only the chunks taken that way change
+ * hands between frames.
  *
  * Mode course's accumulators only move forward (kernel_omp.c), and a chunk taken from the back
  * of a run may lie behind the thief's last chunk, so in mode course every thread takes from
@@ -50,7 +50,7 @@ static inline void retro_chunk_runs_init(retro_chunk_run *run, int runs, int cou
     }
 }
 
-/* The next chunk of run r, from its front (front) or its back (!front), or -1 when it is
+/* The next chunk of `run`, from its front (front) or its back (!front), or -1 when it is
  * empty. */
 static inline int retro_chunk_run_take(retro_chunk_run *run, int front)
 {
@@ -67,8 +67,8 @@ static inline int retro_chunk_run_take(retro_chunk_run *run, int front)
 }
 
 /* Thread t's next chunk among `runs` runs (runs == 1: the one shared run, front to back), or
- * -1 when every run is empty. After its own run, t takes from the back of the others, nearest
- * first in t + 1, t + 2, ... order. */
+ * -1 when every run is empty. After its own run, t takes from the backs of the others, in the
+ * order t + 1, t + 2, ... (mod runs). */
 static inline int retro_chunk_next(retro_chunk_run *run, int runs, int t)
 {
     if (runs == 1)
