@@ -71,8 +71,6 @@ static inline int retro_chunk_run_take(retro_chunk_run *run, int front)
  * order t + 1, t + 2, ... (mod runs). */
 static inline int retro_chunk_next(retro_chunk_run *run, int runs, int t)
 {
-    if (runs == 1)
-        return retro_chunk_run_take(&run[0], 1);
     int c = retro_chunk_run_take(&run[t % runs], 1);
     for (int i = 1; c < 0 && i < runs; i++)
         c = retro_chunk_run_take(&run[(t + i) % runs], 0);
