@@ -15,13 +15,16 @@ void retro_course_start(const retro_frame *f, float *qx, float *qy)
     }
 }
 
-/* Distance-outer in blocks of 8 accumulators held in registers across the columns (GCC/Clang
+/* Distance-outer in blocks of 16 accumulators held in registers across the columns (GCC/Clang
  * vectors of 4 floats, SSE2 on x86-64): each accumulator still sees its additions in column
  * order, one rounding each, so the values are those of column-by-column stepping, while a block
  * is loaded and stored once instead of once per column. The threaded kernels replay the other
- * threads' columns here, half the frame's on two threads. */
+ * threads' columns here. A block of 16 is 8 independent chains of additions per column (4 for
+ * x, 4 for y): with the 4 chains of a block of 8, each addition waited on the one before it in
+ * its chain instead of issuing at the adders' rate (docs/KERNELS.md, "Mode course on threads",
+ * has the measurement). */
 typedef float retro_v4f __attribute__((vector_size(16)));
-enum { RETRO_ADVANCE_BLOCK = 8 };
+enum { RETRO_ADVANCE_VECTORS = 4, RETRO_ADVANCE_BLOCK = 4 * RETRO_ADVANCE_VECTORS };
 static inline retro_v4f v4_at(const float *p)
 {
     retro_v4f v;
@@ -32,21 +35,31 @@ static inline void v4_put(float *p, retro_v4f v)
 {
     memcpy(p, &v, sizeof v);
 }
-/* Accumulators d0..d0+7 of rows qx and qy, stepped over `columns` columns. */
+/* Accumulators d0..d0+15 of rows qx and qy, stepped over `columns` columns. The loops over the
+ * vectors are unrolled so that the chains stay in registers (-O2 alone keeps arrays in memory). */
+#define RETRO_ADVANCE_UNROLLED _Pragma("GCC unroll 4")
 static inline void advance_block(float *qx, float *qy, const float *sx, const float *sy, int columns)
 {
-    retro_v4f x0 = v4_at(qx), x1 = v4_at(qx + 4), y0 = v4_at(qy), y1 = v4_at(qy + 4);
-    const retro_v4f a0 = v4_at(sx), a1 = v4_at(sx + 4), b0 = v4_at(sy), b1 = v4_at(sy + 4);
-    for (int u = 0; u < columns; u++) {
-        x0 += a0;
-        x1 += a1;
-        y0 += b0;
-        y1 += b1;
+    retro_v4f x[RETRO_ADVANCE_VECTORS], y[RETRO_ADVANCE_VECTORS], a[RETRO_ADVANCE_VECTORS], b[RETRO_ADVANCE_VECTORS];
+    RETRO_ADVANCE_UNROLLED
+    for (int k = 0; k < RETRO_ADVANCE_VECTORS; k++) {
+        x[k] = v4_at(qx + 4 * k);
+        y[k] = v4_at(qy + 4 * k);
+        a[k] = v4_at(sx + 4 * k);
+        b[k] = v4_at(sy + 4 * k);
     }
-    v4_put(qx, x0);
-    v4_put(qx + 4, x1);
-    v4_put(qy, y0);
-    v4_put(qy + 4, y1);
+    for (int u = 0; u < columns; u++) {
+        RETRO_ADVANCE_UNROLLED
+        for (int k = 0; k < RETRO_ADVANCE_VECTORS; k++) {
+            x[k] += a[k];
+            y[k] += b[k];
+        }
+    }
+    RETRO_ADVANCE_UNROLLED
+    for (int k = 0; k < RETRO_ADVANCE_VECTORS; k++) {
+        v4_put(qx + 4 * k, x[k]);
+        v4_put(qy + 4 * k, y[k]);
+    }
 }
 
 void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, int u1)
@@ -68,4 +81,15 @@ void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, in
         memcpy(qx + d, t[0], n * sizeof(float));
         memcpy(qy + d, t[1], n * sizeof(float));
     }
+}
+
+void retro_course_seek(const retro_frame *f, float *qx, float *qy, int at, int u)
+{
+    if (f->mode != RETRO_MODE_COURSE)
+        return;
+    if (u < at) { /* the accumulators only add: start again from column 0 */
+        retro_course_start(f, qx, qy);
+        at = 0;
+    }
+    retro_course_advance(f, qx, qy, at, u);
 }

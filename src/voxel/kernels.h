@@ -11,6 +11,10 @@ void retro_course_start(const retro_frame *f, float *qx, float *qy);
 /* Advances the course-mode accumulators over columns [u0, u1) without sampling, with the same
  * float additions a strip performs, so any strip can start at any column bit-exactly. */
 void retro_course_advance(const retro_frame *f, float *qx, float *qy, int u0, int u1);
+/* Moves accumulators that hold column `at`'s positions to column u's: forward by advancing,
+ * or, for a column before `at`, from retro_course_start again (a float addition has no exact
+ * inverse). The threaded kernels call it before each chunk; nothing outside mode course. */
+void retro_course_seek(const retro_frame *f, float *qx, float *qy, int at, int u);
 
 void retro_strip_ybuffer(const retro_frame *f, float *qx, float *qy, int u0, int u1);
 void retro_strip_simd_sse2(const retro_frame *f, float *qx, float *qy, int u0, int u1);
