@@ -10,9 +10,13 @@
  * run, the furthest from where that run's owner is. Only the chunks taken that way change
  * hands between frames.
  *
- * Mode course's accumulators only move forward (kernel_omp.c), and a chunk taken from the back
- * of a run may lie behind the thief's last chunk, so in mode course every thread takes from
- * one shared run front to back: the chunks reach each thread in increasing order. */
+ * Mode course's accumulators only add (retro_course_seek): a thread that takes a chunk behind
+ * its last one replays the frame's columns from the first up to it. Taken from the back of
+ * another run, every chunk after the first lies behind the one before, and each would replay
+ * up to most of the frame; so in mode course thieves take from the front of another run. A
+ * thread visits the runs in the order t, t + 1, ... and the runs lie in column order, so its
+ * chunks only move forward except once, where it wraps from the last run to the first: one
+ * replay from the first column a frame at most. */
 #ifndef RETRO_CHUNK_RUNS_H
 #define RETRO_CHUNK_RUNS_H
 
@@ -32,11 +36,10 @@ static inline uint64_t retro_chunk_span(uint32_t front, uint32_t back)
     return (uint64_t)front | (uint64_t)back << 32;
 }
 
-/* How many runs frame f's `threads` threads take their chunks from: one, shared, in mode
- * course; else one each. */
-static inline int retro_chunk_runs_for(const retro_frame *f, int threads)
+/* Whether frame f's thieves take from the front of another run (mode course) or its back. */
+static inline int retro_chunk_steal_front(const retro_frame *f)
 {
-    return f->mode == RETRO_MODE_COURSE ? 1 : threads;
+    return f->mode == RETRO_MODE_COURSE;
 }
 
 /* Cuts chunks [0, count) into `runs` runs of adjacent chunks, as equal as counts allow, run r
@@ -66,14 +69,14 @@ static inline int retro_chunk_run_take(retro_chunk_run *run, int front)
     }
 }
 
-/* Thread t's next chunk among `runs` runs (runs == 1: the one shared run, front to back), or
- * -1 when every run is empty. After its own run, t takes from the backs of the others, in the
- * order t + 1, t + 2, ... (mod runs). */
-static inline int retro_chunk_next(retro_chunk_run *run, int runs, int t)
+/* Thread t's next chunk among `runs` runs, or -1 when every run is empty. After its own run, t
+ * takes from the backs (or with steal_front, the fronts) of the others, in the order t + 1,
+ * t + 2, ... (mod runs). */
+static inline int retro_chunk_next(retro_chunk_run *run, int runs, int t, int steal_front)
 {
     int c = retro_chunk_run_take(&run[t % runs], 1);
     for (int i = 1; c < 0 && i < runs; i++)
-        c = retro_chunk_run_take(&run[(t + i) % runs], 0);
+        c = retro_chunk_run_take(&run[(t + i) % runs], steal_front);
     return c;
 }
 

@@ -5,14 +5,15 @@
  *
  * Mode course accumulates each line's position column by column. A thread keeps its own
  * accumulators, starts them at column 1 and, before each chunk it takes, advances them over
- * the columns other threads rendered with the same additions (retro_course_advance), so at
- * every column they hold exactly the values the single-thread reference has there.
+ * the columns other threads rendered with the same additions (retro_course_seek; from column 1
+ * again for a chunk behind its last), so at every column they hold exactly the values the
+ * single-thread reference has there.
  *
  * Schedule: chunks of 64 whole columns with edges on out's 64-byte lines (column_chunks.h),
  * one run of adjacent chunks per thread, the same every frame, with a thread that finishes its
  * run taking chunks from the back of another (chunk_runs.h): so a thread mostly stores into
- * the lines it stored into the frame before, which are still in its core's cache. Mode course
- * shares one run front to back instead, which keeps each thread's chunks in increasing order.
+ * the lines it stored into the frame before, which are still in its core's cache. In mode
+ * course a thief takes from another run's front instead, so it goes back at most once a frame.
  * The chunk size was chosen by measurement over 60 seeded poses of the default scenes
  * (docs/KERNELS.md, "Load balance"): chunks of 16-32 lost to the cost each chunk of a strip
  * carries (its constants, its first distances). RETRO_OMP_CHUNK overrides it. */
@@ -47,9 +48,9 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
     const retro_column_chunks cc = retro_column_chunks_of(f, chunk_columns());
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map */
     retro_pool_enter(pool);
-    const int runs = retro_chunk_runs_for(f, threads);
+    const int steal_front = retro_chunk_steal_front(f);
     retro_chunk_run run[RETRO_MAX_THREADS];
-    retro_chunk_runs_init(run, runs, cc.count);
+    retro_chunk_runs_init(run, threads, cc.count);
 #pragma omp parallel num_threads(threads)
     {
         int t = omp_get_thread_num();
@@ -57,10 +58,10 @@ void retro_kernel_omp(const void *frame, retro_ctx *rc)
         float *qx = retro_pool_qx(pool, t), *qy = retro_pool_qy(pool, t);
         retro_course_start(f, qx, qy);
         int at = 0;
-        for (int c; (c = retro_chunk_next(run, runs, t)) >= 0;) {
+        for (int c; (c = retro_chunk_next(run, threads, t, steal_front)) >= 0;) {
             int u0, u1;
             retro_column_chunk(&cc, c, &u0, &u1);
-            retro_course_advance(f, qx, qy, at, u0);
+            retro_course_seek(f, qx, qy, at, u0);
             strip(f, qx, qy, u0, u1);
             at = u1;
         }

@@ -5,10 +5,9 @@
  * wake-up, not a thread start: the submission's run-to-run spread came from starting them.
  *
  * Threads take chunks of columns as omp's do (chunk_runs.h): one run of adjacent chunks per
- * thread, the same every frame, and the back of another run once a thread's own is done; in
- * mode course one shared run front to back, so chunks reach each thread in increasing order
- * and its accumulators only move forward (retro_course_advance replays the columns other
- * threads took, addition by addition). A pool with fewer threads than asked (or none) is
+ * thread, the same every frame, and the back of another run once a thread's own is done (in
+ * mode course its front, so a thread's accumulators go back at most once a frame:
+ * retro_course_seek replays the columns other threads took, addition by addition). A pool with fewer threads than asked (or none) is
  * still exact: the runs are cut for the threads that started. Scratch lives in the context;
  * the frame allocates nothing once the context has grown. The strip is the frame's
  * (retro_frame.strip, chosen by frame setup). */
@@ -27,7 +26,7 @@
 typedef struct {
     const retro_frame *f;
     retro_chunk_run run[RETRO_PT_MAX_THREADS];
-    int runs;
+    int runs, steal_front;
     retro_column_chunks chunks;
     float *scratch; /* thread t's accumulators at 2t and 2t + 1 strides */
     size_t stride;
@@ -40,10 +39,10 @@ static void pt_task(void *arg, int t)
     float *qx = job->scratch + 2 * (size_t)t * job->stride, *qy = qx + job->stride;
     retro_course_start(f, qx, qy);
     int at = 0;
-    for (int c; (c = retro_chunk_next(job->run, job->runs, t)) >= 0;) {
+    for (int c; (c = retro_chunk_next(job->run, job->runs, t, job->steal_front)) >= 0;) {
         int u0, u1;
         retro_column_chunk(&job->chunks, c, &u0, &u1);
-        retro_course_advance(f, qx, qy, at, u0);
+        retro_course_seek(f, qx, qy, at, u0);
         f->strip(f, qx, qy, u0, u1);
         at = u1;
     }
@@ -124,7 +123,7 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    pt_job job = {.f = f, .runs = retro_chunk_runs_for(f, T), .chunks = retro_column_chunks_of(f, PT_CHUNK),
+    pt_job job = {.f = f, .runs = T, .steal_front = retro_chunk_steal_front(f), .chunks = retro_column_chunks_of(f, PT_CHUNK),
                   .scratch = rc->tscratch, .stride = stride};
     retro_chunk_runs_init(job.run, job.runs, job.chunks.count);
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map, as omp's */
