@@ -40,27 +40,19 @@ Test(chunk_runs, runs_tile_the_chunks_evenly)
         }
 }
 
-/* One thread alone: its own run front to back, then the next runs' from their backs. */
-Test(chunk_runs, a_lone_thread_takes_its_run_then_the_others_from_the_back)
+/* One thread alone: its own run front to back, then the next runs' from their backs, or in
+ * mode course from their fronts (so only forward within a run). */
+Test(chunk_runs, a_lone_thread_takes_its_run_then_the_others)
 {
-    retro_chunk_run run[3];
-    retro_chunk_runs_init(run, 3, 9);
-    const int want[] = {3, 4, 5, 8, 7, 6, 2, 1, 0};
-    for (int i = 0; i < 9; i++)
-        cr_assert_eq(retro_chunk_next(run, 3, 1, 0), want[i], "take %d", i);
-    cr_assert_eq(retro_chunk_next(run, 3, 1, 0), -1);
-    cr_assert_eq(retro_chunk_next(run, 3, 0, 0), -1);
-}
-
-/* Mode course's thieves: the other runs from their fronts, so only forward within a run. */
-Test(chunk_runs, a_lone_course_thread_takes_the_others_from_the_front)
-{
-    retro_chunk_run run[3];
-    retro_chunk_runs_init(run, 3, 9);
-    const int want[] = {3, 4, 5, 6, 7, 8, 0, 1, 2};
-    for (int i = 0; i < 9; i++)
-        cr_assert_eq(retro_chunk_next(run, 3, 1, 1), want[i], "take %d", i);
-    cr_assert_eq(retro_chunk_next(run, 3, 1, 1), -1);
+    const int want[2][9] = {{3, 4, 5, 8, 7, 6, 2, 1, 0}, {3, 4, 5, 6, 7, 8, 0, 1, 2}};
+    for (int front = 0; front < 2; front++) {
+        retro_chunk_run run[3];
+        retro_chunk_runs_init(run, 3, 9);
+        for (int i = 0; i < 9; i++)
+            cr_assert_eq(retro_chunk_next(run, 3, 1, front), want[front][i], "front %d, take %d", front, i);
+        cr_assert_eq(retro_chunk_next(run, 3, 1, front), -1);
+        cr_assert_eq(retro_chunk_next(run, 3, 0, front), -1);
+    }
 }
 
 /* One run (one thread) goes front to back either way. */

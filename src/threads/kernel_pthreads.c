@@ -7,10 +7,10 @@
  * Threads take chunks of columns as omp's do (chunk_runs.h): one run of adjacent chunks per
  * thread, the same every frame, and the back of another run once a thread's own is done (in
  * mode course its front, so a thread's accumulators go back at most once a frame:
- * retro_course_seek replays the columns other threads took, addition by addition). A pool with fewer threads than asked (or none) is
- * still exact: the runs are cut for the threads that started. Scratch lives in the context;
- * the frame allocates nothing once the context has grown. The strip is the frame's
- * (retro_frame.strip, chosen by frame setup). */
+ * retro_course_seek replays the columns other threads took, addition by addition). A pool
+ * with fewer threads than asked (or none) is still exact: the runs are cut for the threads
+ * that started. Scratch lives in the context; the frame allocates nothing once the context
+ * has grown. The strip is the frame's (retro_frame.strip, chosen by frame setup). */
 #include <stdlib.h>
 
 #include "chunk_runs.h"
@@ -123,8 +123,12 @@ void retro_kernel_pthreads(const void *frame, retro_ctx *rc)
         f->strip(f, rc->qx, rc->qy, 0, f->W);
         return;
     }
-    pt_job job = {.f = f, .runs = T, .steal_front = retro_chunk_steal_front(f), .chunks = retro_column_chunks_of(f, PT_CHUNK),
-                  .scratch = rc->tscratch, .stride = stride};
+    pt_job job = {.f = f,
+                  .runs = T,
+                  .steal_front = retro_chunk_steal_front(f),
+                  .chunks = retro_column_chunks_of(f, PT_CHUNK),
+                  .scratch = rc->tscratch,
+                  .stride = stride};
     retro_chunk_runs_init(job.run, job.runs, job.chunks.count);
     retro_simd_offer_packed(rc); /* f is &rc->frame: the strips see the packed map, as omp's */
     retro_pt_pool_run(pool, pt_task, &job);

@@ -87,7 +87,7 @@ void retro_course_seek(const retro_frame *f, float *qx, float *qy, int at, int u
 {
     if (f->mode != RETRO_MODE_COURSE)
         return;
-    if (u < at) { /* the accumulators only add: start again from column 0 */
+    if (u < at) { /* the accumulators only add: start them again at the first column */
         retro_course_start(f, qx, qy);
         at = 0;
     }
