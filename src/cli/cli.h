@@ -2,6 +2,7 @@
 #ifndef RETRO_CLI_H
 #define RETRO_CLI_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* Exit code for bad input, per the suite's convention. */
@@ -17,6 +18,12 @@ int cli_u64(const char *s, uint64_t *out);
 int cli_size(const char *s, int *w, int *h);    /* "WxH" */
 int cli_pair(const char *s, float *x, float *y); /* "X,Y" */
 int cli_rgb(const char *s, uint32_t *rgb);       /* "RRGGBB" -> R<<24|G<<16|B<<8 */
+
+/* Splits s into its words, the runs of characters other than space and tab: copies s to buf
+ * (size bytes) with a NUL after each word and sets words[0..count) to them, words[count] to
+ * NULL. Returns the count, or -1 when s has no word, more than max - 1 words, or does not fit
+ * in buf (words and buf are then unspecified). */
+int cli_words(const char *s, char *buf, size_t size, char **words, int max);
 
 /* Takes the value of option argv[*i] (advancing *i), or NULL when it is missing. */
 const char *cli_value(int argc, char **argv, int *i);

@@ -117,3 +117,25 @@ const char *cli_value(int argc, char **argv, int *i)
         return NULL;
     return argv[++*i];
 }
+
+int cli_words(const char *s, char *buf, size_t size, char **words, int max)
+{
+    size_t len = strlen(s);
+    if (len >= size || max < 2)
+        return -1;
+    memcpy(buf, s, len + 1);
+    int n = 0;
+    for (char *c = buf; *c;) {
+        if (*c == ' ' || *c == '\t') {
+            *c++ = 0;
+            continue;
+        }
+        if (n == max - 1)
+            return -1;
+        words[n++] = c;
+        while (*c && *c != ' ' && *c != '\t')
+            c++;
+    }
+    words[n] = NULL;
+    return n ? n : -1;
+}

@@ -3,15 +3,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-#include "timing.h"
 #include "cli.h"
 #include "ctx.h"
 #include "hmax_pyramid.h"
 #include "isa.h"
 #include "kernels.h"
 #include "render_columns.h"
+#include "render_timing.h"
 #include "retro_mesh.h"
 #include "scene_args.h"
 
@@ -22,7 +21,7 @@ static void help(void)
     printf("usage: retro render MAP|SCENE [-k KERNEL] [-m MODE] [-s WxH] [-d DISTANCE]\n"
            "                        [-p X,Y] [-z HEIGHT] [-a ANGLE] [--sky RRGGBB] [--isa LEVEL]\n"
            "                        [--threads N] [--lod L] [--no-skip] [--stats]\n"
-           "                        [--columns OUT.csv] [--time [N]]\n"
+           "                        [--columns OUT.csv] [--time [N] [--versus ARGS]]\n"
            "                        -o OUT.ppm|OUT.png\n\n"
            "MAP is a prefix: MAP.pgm (heights) and MAP.ppm or MAP.png (colours).\n"
            "SCENE is a file ending in .scene (README, Scenes): its map, camera, screen, sky and\n"
@@ -58,6 +57,11 @@ static void help(void)
            "  --time [N]  render N frames (default 50) after one untimed frame and print the\n"
            "              kernel used, the mode, the median and the minimum ms per frame;\n"
            "              -o is then optional (the last frame is written)\n"
+           "  --versus ARGS  with --time: also time the configuration these options give\n"
+           "              when added to the others (words split at spaces, e.g. \"--no-skip\" or\n"
+           "              \"-k simd-avx512 --threads 1\"; not -o, --columns, --stats, --time,\n"
+           "              --isa), the two frames taken in turn, and print its line and the\n"
+           "              median and quartiles of the N ratios of its time to the first's\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n"
            "A render that would take more than a few seconds (the naive reference at a large\n"
            "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
@@ -94,31 +98,6 @@ static int print_mesh_stats(const render_job *j)
     printf("after clipping: %" PRIu64 " (%" PRIu64 " entirely outside), %" PRIu64 " sub-triangles rasterized\n",
            front - s->clipped_out, s->clipped_out, s->rasterized);
     printf("fragments: %" PRIu64 " (%" PRIu64 " written)\n", s->fragments, s->written);
-    return 0;
-}
-
-/* One untimed frame, then n timed ones; prints what ran and the median and minimum. */
-static int time_frames(render_job *j, const player_t *p, long n)
-{
-    double *ms = malloc((size_t)n * sizeof *ms);
-    if (!ms)
-        return cli_error("render", "out of memory");
-    retro_err e = retro_render(j->rc, j->k, &j->opts, p, &j->c);
-    for (long i = 0; !e && i < n; i++) {
-        double t0 = cli_now_ms();
-        e = retro_render(j->rc, j->k, &j->opts, p, &j->c);
-        ms[i] = cli_now_ms() - t0;
-    }
-    if (e) {
-        free(ms);
-        return job_error("render", j, e);
-    }
-    qsort(ms, (size_t)n, sizeof *ms, cli_cmp_double);
-    double med = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-    printf("kernel %s (family %s), mode %s, %dx%d, D %d: median %.3f ms, min %.3f ms per frame over %ld frames\n",
-           j->k->name, j->k->family->name, job_mode_name(j), j->c.scr_width, j->c.scr_height, j->c.distance, med,
-           ms[0], n);
-    free(ms);
     return 0;
 }
 
@@ -176,6 +155,54 @@ static int print_stats(render_job *j, const player_t *p)
     return 0;
 }
 
+/* o2 for --versus ARGS: the first configuration's words (args[0..n), flags taken out) and
+ * ARGS' words after them, parsed as the first were; --no-skip among them sets *no_skip. Options
+ * that would write, count, time or set a process-wide ISA level are refused. Returns 0,
+ * CLI_EBADINPUT after the one-line error. o2's strings point into argv and buf. */
+static int versus_opts(const char *versus, char **args, int n, char *buf, size_t bufsize, render_opts *o2,
+                       int *no_skip)
+{
+    enum { MAX_WORDS = 64 };
+    char *words[MAX_WORDS];
+    int nw = cli_words(versus, buf, bufsize, words, MAX_WORDS);
+    if (nw < 0)
+        return cli_error("render", "bad --versus '%s': give 1 to %d words in one argument of at most %zu characters",
+                         versus, MAX_WORDS - 1, bufsize - 1);
+    static const struct {
+        const char *word, *why;
+    } refused[] = {{"-o", "the first configuration's outputs are the only ones"},
+                   {"--columns", "the first configuration's outputs are the only ones"},
+                   {"--stats", "the first configuration's outputs are the only ones"},
+                   {"--time", "both are timed with the first's --time"},
+                   {"--versus", "it compares two configurations, not more"},
+                   {"--isa", "the ISA level holds for the whole process (time each level in its own run)"},
+                   {"--help", "it is not an option of a configuration"},
+                   {"-h", "it is not an option of a configuration"}};
+    char **all = malloc(((size_t)n + (size_t)nw + 1) * sizeof *all);
+    if (!all)
+        return cli_error("render", "out of memory");
+    int m = 0, r = 0;
+    for (int i = 0; i < n; i++)
+        all[m++] = args[i];
+    for (int w = 0; w < nw && !r; w++) {
+        for (size_t k = 0; k < sizeof refused / sizeof *refused && !r; k++)
+            if (!strcmp(words[w], refused[k].word))
+                r = cli_error("render", "--versus cannot take %s: %s", words[w], refused[k].why);
+        if (!strcmp(words[w], "--no-skip"))
+            *no_skip = 1;
+        else
+            all[m++] = words[w];
+    }
+    all[m] = NULL;
+    if (!r) {
+        render_outputs ignored = {NULL, NULL};
+        render_opts_init(o2);
+        r = render_args("render", "MAP", m, all, o2, render_extra, &ignored, help);
+    }
+    free(all);
+    return r;
+}
+
 int cmd_render(int argc, char **argv)
 {
     render_outputs outs = {NULL, NULL};
@@ -184,6 +211,7 @@ int cmd_render(int argc, char **argv)
     /* The two flags without a value are taken out before the shared parser sees argv. */
     int no_skip = 0, stats = 0, n = 0;
     long time_n = 0; /* --time: frames to time, 0 when not asked */
+    const char *versus = NULL; /* --versus ARGS */
     char **args = malloc(((size_t)argc + 1) * sizeof *args);
     if (!args)
         return cli_error("render", "out of memory");
@@ -192,7 +220,13 @@ int cmd_render(int argc, char **argv)
             no_skip = 1;
         else if (i > 0 && !strcmp(argv[i], "--stats"))
             stats = 1;
-        else if (i > 0 && !strcmp(argv[i], "--time")) {
+        else if (i > 0 && !strcmp(argv[i], "--versus")) {
+            if (i + 1 >= argc) {
+                free(args);
+                return cli_error("render", "option --versus needs ARGS (retro render --help)");
+            }
+            versus = argv[++i];
+        } else if (i > 0 && !strcmp(argv[i], "--time")) {
             time_n = 50;
             /* an optional count: the next argument when it is a number */
             long v;
@@ -210,6 +244,14 @@ int cmd_render(int argc, char **argv)
     }
     args[n] = NULL;
     int r = render_args("render", "MAP", n, args, &o, render_extra, &outs, help);
+    if (!r && versus && !time_n)
+        r = cli_error("render", "--versus times two configurations: it needs --time");
+    /* the second configuration: the same words with ARGS' after them (the later ones win) */
+    render_opts o2;
+    int no_skip2 = no_skip;
+    char words_buf[1024];
+    if (!r && versus)
+        r = versus_opts(versus, args, n, words_buf, sizeof words_buf, &o2, &no_skip2);
     free(args);
     if (r)
         return r == 1 ? 0 : r;
@@ -217,24 +259,34 @@ int cmd_render(int argc, char **argv)
     if (!out_path && !time_n && !outs.columns)
         return cli_error("render", "no output given: -o OUT.ppm or -o OUT.png");
 
-    render_job j;
+    render_job j, j2;
     if (job_open("render", &o, &j))
         return CLI_EBADINPUT;
+    if (versus && job_open("render", &o2, &j2)) {
+        job_close(&j);
+        return CLI_EBADINPUT;
+    }
     j.opts.no_skip = no_skip;
-    player_t p;
+    player_t p, p2;
     job_pose(&j, &o, -1, &p);
+    if (versus) {
+        j2.opts.no_skip = no_skip2;
+        job_pose(&j2, &o2, -1, &p2);
+    }
     /* The column counts are staged before the image is written, so a bad --columns leaves
      * no image either, and committed only when everything else succeeded. */
     render_columns cols = {outs.columns, NULL};
     int status = outs.columns ? columns_stage(&cols, &j, &p) : 0;
     if (!status && time_n)
-        status = time_frames(&j, &p, time_n);
+        status = versus ? render_versus(&j, &p, &j2, &p2, time_n) : render_time(&j, &p, time_n);
     if (!status && out_path)
         status = job_write("render", &j, &p, out_path);
     if (!status && stats)
         status = print_stats(&j, &p);
     int cs = columns_finish(&cols, !status);
     status = status ? status : cs;
+    if (versus)
+        job_close(&j2);
     job_close(&j);
     return status;
 }

@@ -7,6 +7,8 @@
  *   cli_size   INTxINT, each 1..2^30, split at the first 'x'
  *   cli_pair   FLOAT,FLOAT, split at the first ','
  *   cli_rgb    [#] and exactly six hex digits -> RRGGBB << 8
+ *   cli_words  the runs of characters other than space and tab, in order (retro render
+ *              --versus ARGS); none, too many or a buffer too small: an error
  * cli_float must accept every well-formed number strtof takes to a finite float: one that
  * underflows (ERANGE) to a subnormal or zero is valid too. Besides the input string, values
  * decoded from the input are printed in canonical form and must parse back exactly. */
@@ -251,6 +253,43 @@ static void check_rgb(const char *s)
         fail("cli_rgb", s, "wrote its output on failure");
 }
 
+/* cli_words against a scan of its own: each word is a maximal run without space or tab. */
+static void check_words(const char *s)
+{
+    const size_t len = strlen(s);
+    int count = 0;
+    for (size_t i = 0; i < len; i++)
+        count += s[i] != ' ' && s[i] != '\t' && (i == 0 || s[i - 1] == ' ' || s[i - 1] == '\t');
+    char buf[MAX_LEN + 1];
+    char *words[MAX_LEN + 2];
+    static const int maxes[] = {2, 3, 5, MAX_LEN + 2};
+    for (size_t m = 0; m < sizeof maxes / sizeof maxes[0]; m++) {
+        const int max = maxes[m];
+        int n = cli_words(s, buf, len + 1, words, max);
+        if (count == 0 || count > max - 1) {
+            if (n != -1)
+                fail("cli_words", s, "accepted no words or too many");
+            continue;
+        }
+        if (n != count)
+            fail("cli_words", s, "wrong word count");
+        if (words[n] != NULL)
+            fail("cli_words", s, "no NULL after the last word");
+        const char *at = s;
+        for (int w = 0; w < n; w++) {
+            at += strspn(at, " \t");
+            size_t wl = strcspn(at, " \t");
+            if (strlen(words[w]) != wl || memcmp(words[w], at, wl) != 0)
+                fail("cli_words", s, "a word differs from the input's");
+            if (words[w] < buf || words[w] + wl > buf + len)
+                fail("cli_words", s, "a word outside the buffer");
+            at += wl;
+        }
+        if (cli_words(s, buf, len, words, max) != -1)
+            fail("cli_words", s, "accepted a buffer without room for the NUL");
+    }
+}
+
 /* Canonical spellings of values taken from the input must parse back exactly. */
 static void round_trips(const uint8_t *data, size_t size)
 {
@@ -307,6 +346,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check_size(s);
     check_pair(s);
     check_rgb(s);
+    check_words(s);
     round_trips(data, size);
     return 0;
 }
