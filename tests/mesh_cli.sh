@@ -52,9 +52,9 @@ sub=$(awk '/^triangles submitted:/ {print $3}' "$tmp/st")
 front=$(awk '/^after culling:/ {print $3}' "$tmp/st")
 [ "$front" -lt "$sub" ] || fail "[cull] culled nothing: $front of $sub"
 
-# --time: the kernel actually used, the mode, median and minimum
+# --time: the kernel actually used, the mode, the scene's effects, median and minimum
 "$retro" render "$tmp/m.scene" -k mesh-painter -m binary64 --time 3 >"$tmp/t" 2>"$tmp/err" || fail "--time mesh"
-grep -Eq '^kernel mesh-painter \(family mesh\), mode binary64, 80x60, D 120: median [0-9.]+ ms, min [0-9.]+ ms per frame over 3 frames$' "$tmp/t" \
+grep -Eq '^kernel mesh-painter \(family mesh\), mode binary64, 80x60, D 120, effects fog,gouraud,cull: median [0-9.]+ ms, min [0-9.]+ ms per frame over 3 frames$' "$tmp/t" \
   || fail "--time mesh said: $(cat "$tmp/t" "$tmp/err")"
 "$retro" render "$map" -s 32x24 -d 50 --time 2 >"$tmp/t" 2>"$tmp/err" || fail "--time voxel"
 grep -Eq '^kernel [a-z0-9-]+ \(family voxel\), mode exact, 32x24, D 50: median' "$tmp/t" || fail "--time voxel said: $(cat "$tmp/t")"

@@ -1,6 +1,7 @@
 #!/bin/sh
 # retro render --time N --versus ARGS (docs/COMMANDS.md): the second configuration is the first
-# with ARGS on top, both are timed in turn and named in their own lines, the ratio line's median
+# with ARGS on top (a MAP or SCENE among them replacing the first's), both are timed in turn and
+# named in their own lines, the ratio line's median
 # lies between its quartiles, -o keeps the first's frame, and bad requests exit 2 with one line
 # and write nothing. Timings are never checked: only what was timed and how it is reported.
 set -u
@@ -39,6 +40,16 @@ grep -Eq '^kernel ybuffer \(family voxel\), mode exact, 32x24, D 50: median' "$t
 grep -Eq '^versus: kernel mesh-zbuffer \(family mesh\), mode binary32, 32x24, D 50: median' "$tmp/out" ||
   fail "mesh versus line: $(sed -n 2p "$tmp/out")"
 
+# a MAP or SCENE in ARGS replaces the first's: a scene's effects are named on its line only
+printf '[scene]\nmap = %s/%s\n[bilinear]\n' "$(pwd)" "$map" >"$tmp/b.scene"
+"$retro" render $map $frame --time 2 --versus "$tmp/b.scene" >"$tmp/out" 2>"$tmp/err" ||
+  fail "--versus SCENE: $(cat "$tmp/err")"
+grep -Eq '^versus: kernel [a-z0-9-]+ \(family voxel\), mode exact, 32x24, D 50, effects bilinear: median' "$tmp/out" ||
+  fail "the scene's effects are not on the versus line: $(sed -n 2p "$tmp/out")"
+! sed -n 1p "$tmp/out" | grep -q effects || fail "the first line names effects: $(sed -n 1p "$tmp/out")"
+"$retro" render $map $frame --time 2 --versus "-k ybuffer maps/test/no-such-map" >/dev/null 2>"$tmp/err"
+grep -q 'no-such-map' "$tmp/err" || fail "the MAP in ARGS was not the second's: $(cat "$tmp/err")"
+
 # -o writes the first configuration's frame
 "$retro" render $map $frame -k ybuffer -o "$tmp/alone.ppm" 2>/dev/null || fail "render -o"
 "$retro" render $map $frame -k ybuffer --time 2 --versus "-k naive -d 20" -o "$tmp/v.ppm" >/dev/null 2>&1 ||
@@ -69,7 +80,8 @@ for w in -o --columns --stats --time --versus --isa --help -h; do
   bad "--versus '$w'" --time 2 --versus "$w x"
 done
 bad "--versus unknown kernel" --time 2 --versus "-k nosuch"
-bad "--versus second map" --time 2 --versus "maps/test/flat-64"
+bad "--versus two maps" --time 2 --versus "maps/test/flat-64 maps/test/flat-1"
+bad "--versus missing map" --time 2 --versus "maps/test/no-such-map"
 bad "--versus bad value" --time 2 --versus "--threads 0"
 bad "omp beside pthreads" -k omp --threads 2 --time 2 --versus "-k pthreads"
 

@@ -57,11 +57,12 @@ static void help(void)
            "  --time [N]  render N frames (default 50) after one untimed frame and print the\n"
            "              kernel used, the mode, the median and the minimum ms per frame;\n"
            "              -o is then optional (the last frame is written)\n"
-           "  --versus ARGS  with --time: also time the configuration these options give\n"
-           "              when added to the others (words split at spaces, e.g. \"--no-skip\" or\n"
-           "              \"-k simd-avx512 --threads 1\"; not -o, --columns, --stats, --time,\n"
-           "              --isa), the two frames taken in turn, and print its line and the\n"
-           "              median and quartiles of the N ratios of its time to the first's\n"
+           "  --versus ARGS  with --time: also time the configuration ARGS make of this one\n"
+           "              (words split at spaces: options that override, a MAP|SCENE that\n"
+           "              replaces; e.g. \"--no-skip\", \"-k simd-avx512 --threads 1\"; not -o,\n"
+           "              --columns, --stats, --time, --isa), the frames taken in turn, and print\n"
+           "              its line and the median and quartiles of the N ratios of its time to\n"
+           "              the first's\n"
            "  -o OUT      output image, .ppm or .png; nothing is written on failure\n"
            "A render that would take more than a few seconds (the naive reference at a large\n"
            "distance or screen) prints a one-line warning on stderr first. Input limits and the\n"
@@ -156,11 +157,12 @@ static int print_stats(render_job *j, const player_t *p)
 }
 
 /* o2 for --versus ARGS: the first configuration's words (args[0..n), flags taken out) and
- * ARGS' words after them, parsed as the first were; --no-skip among them sets *no_skip. Options
+ * ARGS' words after them, parsed as the first were, without the first's MAP (map) when ARGS
+ * names one; --no-skip among them sets *no_skip. Options
  * that would write, count, time or set a process-wide ISA level are refused. Returns 0,
  * CLI_EBADINPUT after the one-line error. o2's strings point into argv and buf. */
-static int versus_opts(const char *versus, char **args, int n, char *buf, size_t bufsize, render_opts *o2,
-                       int *no_skip)
+static int versus_opts(const char *versus, char **args, int n, const char *map, char *buf, size_t bufsize,
+                       render_opts *o2, int *no_skip)
 {
     enum { MAX_WORDS = 64 };
     char *words[MAX_WORDS];
@@ -181,9 +183,18 @@ static int versus_opts(const char *versus, char **args, int n, char *buf, size_t
     char **all = malloc(((size_t)n + (size_t)nw + 1) * sizeof *all);
     if (!all)
         return cli_error("render", "out of memory");
+    /* a MAP or SCENE among the words (a word that is no option's value) replaces the first's */
+    int own_map = 0;
+    for (int w = 0; w < nw; w++) {
+        if (words[w][0] != '-')
+            own_map = 1;
+        else if (strcmp(words[w], "--no-skip"))
+            w++; /* every other option takes a value */
+    }
     int m = 0, r = 0;
     for (int i = 0; i < n; i++)
-        all[m++] = args[i];
+        if (!own_map || args[i] != map)
+            all[m++] = args[i];
     for (int w = 0; w < nw && !r; w++) {
         for (size_t k = 0; k < sizeof refused / sizeof *refused && !r; k++)
             if (!strcmp(words[w], refused[k].word))
@@ -251,7 +262,7 @@ int cmd_render(int argc, char **argv)
     int no_skip2 = no_skip;
     char words_buf[1024];
     if (!r && versus)
-        r = versus_opts(versus, args, n, words_buf, sizeof words_buf, &o2, &no_skip2);
+        r = versus_opts(versus, args, n, o.map, words_buf, sizeof words_buf, &o2, &no_skip2);
     free(args);
     if (r)
         return r == 1 ? 0 : r;

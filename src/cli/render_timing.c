@@ -27,14 +27,21 @@ static retro_err timed_frame(render_job *j, const player_t *p, double *ms, int s
     return e;
 }
 
-/* "kernel K (family F), mode M, WxH, D n[, no skipping]: median X ms, min Y ms per frame over n
- * frames" after prefix; sorts ms. */
+/* "kernel K (family F), mode M, WxH, D n[, effects E,..][, no skipping]: median X ms, min Y ms
+ * per frame over n frames" after prefix; sorts ms. */
 static void time_line(const char *prefix, const render_job *j, double *ms, long n)
 {
     qsort(ms, (size_t)n, sizeof *ms, cli_cmp_double);
-    printf("%skernel %s (family %s), mode %s, %dx%d, D %d%s: median %.3f ms, min %.3f ms per frame over %ld frames\n",
-           prefix, j->k->name, j->k->family->name, job_mode_name(j), j->c.scr_width, j->c.scr_height, j->c.distance,
-           j->opts.no_skip ? ", no skipping" : "", median_sorted(ms, n), ms[0], n);
+    printf("%skernel %s (family %s), mode %s, %dx%d, D %d", prefix, j->k->name, j->k->family->name,
+           job_mode_name(j), j->c.scr_width, j->c.scr_height, j->c.distance);
+    unsigned fx = j->opts.fx ? j->opts.fx->flags : 0;
+    for (unsigned bit = 1, first = 1; fx && bit; bit <<= 1)
+        if (fx & bit) {
+            printf("%s%s", first ? ", effects " : ",", retro_fx_name(bit));
+            first = 0;
+        }
+    printf("%s: median %.3f ms, min %.3f ms per frame over %ld frames\n", j->opts.no_skip ? ", no skipping" : "",
+           median_sorted(ms, n), ms[0], n);
 }
 
 /* Whether a and b run different threaded kernels, each on more than one thread. Workers that
