@@ -71,6 +71,11 @@ struct BenchCase {
     double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
     double done_at = std::numeric_limits<double>::quiet_NaN(); // seconds into the run when it finished
+    // A --no-skip twin of the large-frame table (skip_large.h): its frames and its twin's timed
+    // in turn after the run, the median and quartiles of the per-pair ratios (without / with).
+    double in_turn = std::numeric_limits<double>::quiet_NaN();
+    double in_turn_q1 = std::numeric_limits<double>::quiet_NaN();
+    double in_turn_q3 = std::numeric_limits<double>::quiet_NaN();
     // Mesh cases: the frame's counts (retro_mesh_stats), the same every frame of the case.
     mutable double tri_submitted = std::numeric_limits<double>::quiet_NaN();
     mutable double tri_drawn = std::numeric_limits<double>::quiet_NaN(); // after culling and clipping

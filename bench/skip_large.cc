@@ -2,6 +2,7 @@
 #include "skip_large.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -31,6 +32,68 @@ static const BenchCase *ran(const BenchCase *c)
     return c && c->ran && c->error.empty() ? c : nullptr;
 }
 
+// One frame of c (or, with no_skip, of its twin's frame with skipping off) in ms; NaN if it fails.
+static double timed(retro_ctx *rc, const BenchCase *c, bool no_skip, uint32_t *out)
+{
+    using clock = std::chrono::steady_clock;
+    const bench_scene *s = c->scene;
+    player_t p = s->pose;
+    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out};
+    retro_render_opts o = retro_render_opts_default();
+    o.mode = c->mode;
+    o.threads = c->threads;
+    o.no_skip = no_skip;
+    const clock::time_point t0 = clock::now();
+    if (retro_render(rc, c->kernel, &o, &p, &frame) != RETRO_OK)
+        return std::nan("");
+    return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+}
+
+void skip_large_in_turn(BenchPlan *plan, void (*bind)(int threads))
+{
+    const retro_kernel *k = omp_kernel();
+    if (!k)
+        return;
+    int t = plan_thread_counts(k, plan->cores).back();
+    std::vector<uint32_t> out(static_cast<size_t>(SKIP_LARGE_W) * SKIP_LARGE_H);
+    for (const bench_scene *s : plan->scenes) {
+        const BenchCase *on = ran(plan->find(k, t, s, RETRO_MODE_EXACT, SKIP_LARGE_W, SKIP_LARGE_H, SKIP_LARGE_D));
+        BenchCase *off = const_cast<BenchCase *>(
+            ran(plan->find(k, t, s, RETRO_MODE_EXACT, SKIP_LARGE_W, SKIP_LARGE_H, SKIP_LARGE_D, true)));
+        if (!on || !off)
+            continue;
+        retro_ctx *rc = retro_ctx_new();
+        if (!rc)
+            return;
+        bind(t);
+        std::vector<double> ratio;
+        bool failed = std::isnan(timed(rc, on, false, out.data())) || std::isnan(timed(rc, on, true, out.data()));
+        for (int i = 0; i < SKIP_LARGE_PAIRS && !failed; i++) {
+            double a, b;
+            if (i % 2) { // every other pair the other way round: neither always goes first
+                b = timed(rc, on, true, out.data());
+                a = timed(rc, on, false, out.data());
+            } else {
+                a = timed(rc, on, false, out.data());
+                b = timed(rc, on, true, out.data());
+            }
+            failed = std::isnan(a) || std::isnan(b);
+            if (!failed)
+                ratio.push_back(b / a);
+        }
+        retro_ctx_free(rc);
+        if (failed || ratio.empty())
+            continue;
+        std::sort(ratio.begin(), ratio.end());
+        size_t n = ratio.size();
+        off->in_turn = n % 2 ? ratio[n / 2] : 0.5 * (ratio[n / 2 - 1] + ratio[n / 2]);
+        off->in_turn_q1 = ratio[n / 4];
+        off->in_turn_q3 = ratio[3 * n / 4];
+        std::fprintf(stderr, "  skipping at %dx%d, D %d, %s: %zu pairs timed in turn, ratio %.2f\n", SKIP_LARGE_W,
+                     SKIP_LARGE_H, SKIP_LARGE_D, s->name, n, off->in_turn);
+    }
+}
+
 static std::string share(const BenchCase *c)
 {
     if (!c || std::isnan(c->samples))
@@ -54,8 +117,8 @@ void skip_large_table(std::ostream &o, const BenchPlan &plan)
     if (!k)
         return;
     int t = plan_thread_counts(k, plan.cores).back();
-    double log_on = 0, log_off = 0;
-    int n = 0;
+    double log_on = 0, log_off = 0, log_turn = 0;
+    int n = 0, n_turn = 0;
     bool head = false;
     for (const bench_scene *s : plan.scenes) {
         const BenchCase *on = ran(plan.find(k, t, s, RETRO_MODE_EXACT, SKIP_LARGE_W, SKIP_LARGE_H, SKIP_LARGE_D));
@@ -67,13 +130,23 @@ void skip_large_table(std::ostream &o, const BenchPlan &plan)
             o << "\n### Occlusion skipping at a large frame (`" << k->name << "`, " << t << " threads, mode exact, "
               << SKIP_LARGE_W << "×" << SKIP_LARGE_H << ", D " << SKIP_LARGE_D << ")\n\nmedian ms/frame with the "
                  "kernel's default skipping and with skipping off (`--no-skip`), timed in this run; ratio: "
-                 "without over with. Evaluated: the samples the counting build of the kernel's vector path "
-                 "evaluates, as a share of W×(D−1). Issue 18's target: the geometric mean ratio at least 4×.\n\n"
-              << "| scene | with skipping | without | ratio | evaluated with | evaluated without | max cv |\n"
-                 "|---|--:|--:|--:|--:|--:|--:|\n";
+                 "without over with. In turn: after the run, "
+              << SKIP_LARGE_PAIRS
+              << " pairs of frames with and without skipping timed one after the other, the median of "
+                 "the per-pair ratios (quartiles in brackets): a change in the machine's speed falls on "
+                 "both frames of a pair, where the two medians may have been taken at different speeds. "
+                 "Evaluated: the samples the counting build of the kernel's vector path evaluates, as a "
+                 "share of W×(D−1). Issue 18's target: the geometric mean ratio at least 4×.\n\n"
+              << "| scene | with skipping | without | ratio | in turn | evaluated with | evaluated without | max cv "
+                 "|\n|---|--:|--:|--:|--:|--:|--:|--:|\n";
             head = true;
         }
-        char ratio[32] = "–";
+        char ratio[32] = "–", turn[64] = "–";
+        if (off && !std::isnan(off->in_turn)) {
+            std::snprintf(turn, sizeof turn, "%.2f× (%.2f–%.2f)", off->in_turn, off->in_turn_q1, off->in_turn_q3);
+            log_turn += std::log(off->in_turn);
+            n_turn++;
+        }
         if (on && off) {
             std::snprintf(ratio, sizeof ratio, "%.2f×", off->median_ms / on->median_ms);
             log_on += std::log(on->median_ms);
@@ -81,14 +154,18 @@ void skip_large_table(std::ostream &o, const BenchPlan &plan)
             n++;
         }
         o << "| " << s->name << " | " << report_ms_cell(on ? on->median_ms : std::nan("")) << " | "
-          << report_ms_cell(off ? off->median_ms : std::nan("")) << " | " << ratio << " | " << share(on) << " | "
+          << report_ms_cell(off ? off->median_ms : std::nan("")) << " | " << ratio << " | " << turn << " | "
+          << share(on) << " | "
           << share(off) << " | " << cv_cell(on, off) << " |\n";
     }
     if (n) {
         double a = std::exp(log_on / n), b = std::exp(log_off / n);
         char ratio[32];
         std::snprintf(ratio, sizeof ratio, "%.2f×", b / a);
+        char turn[32] = "–";
+        if (n_turn == n)
+            std::snprintf(turn, sizeof turn, "%.2f×", std::exp(log_turn / n_turn));
         o << "| geomean (" << n << " scenes) | " << report_ms_cell(a) << " | " << report_ms_cell(b) << " | " << ratio
-          << " | | | |\n";
+          << " | " << turn << " | | | |\n";
     }
 }

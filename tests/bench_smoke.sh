@@ -65,15 +65,20 @@ check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipp
 check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
 
 # The large-frame pair (issue 18's skipping ratio): omp with and without skipping at 1920x1080,
-# D 4000, planned without --no-skip, and its table with the ratio and the geometric mean.
+# D 4000, planned without --no-skip, and its table with the ratio, the ratio of the pairs timed
+# in turn after the run (its median between its quartiles) and the geometric means.
 run_bench "$tmp/large" " on the large-frame pair" --scene=maps/test/flat-64 --modes=exact \
   --benchmark_filter="^exact/flat-64/omp/[0-9]+t/1920x1080/D4000(/noskip)?/real_time\$"
 check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/noskip/real_time"' "no large-frame case without skipping"
 check "$tmp/large/bench.json" '"name": "exact/flat-64/omp/[0-9]*t/1920x1080/D4000/real_time"' "no large-frame case with skipping"
 check "$tmp/large/BENCH.md" '^### Occlusion skipping at a large frame (`omp`, [0-9]* threads, mode exact, 1920×1080, D 4000)' \
   "no large-frame table in BENCH.md"
-check "$tmp/large/BENCH.md" '^| flat-64 | [0-9.]* | [0-9.]* | [0-9.]*× | ' "no large-frame row with a ratio"
-check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*× |' "no large-frame geometric mean"
+check "$tmp/large/BENCH.md" '^| flat-64 | [0-9.]* | [0-9.]* | [0-9.]*× | [0-9.]*× ([0-9.]*–[0-9.]*) | ' \
+  "no large-frame row with a ratio and one timed in turn"
+check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*× | [0-9.]*× |' "no large-frame geometric mean"
+check "$tmp/large/out" 'flat-64: 30 pairs timed in turn, ratio [0-9.]*$' "no progress line for the pairs timed in turn"
+grep '^| flat-64 | ' "$tmp/large/BENCH.md" | sed 's/[×()–|]/ /g' | awk '{ exit !($6 <= $5 && $5 <= $7) }' ||
+  { echo "FAIL: the in-turn ratio is not between its quartiles: $(grep '^| flat-64 | ' "$tmp/large/BENCH.md")"; fail=1; }
 
 # Machine steadiness (bench/steady.h): the reference frame at checkpoints through the run, at one
 # thread and at every core, each with its median, and the spread per thread count.
