@@ -110,6 +110,9 @@ enum {
 enum {
     RETRO_KF_WRITE_ONCE = 1u << 0, /* writes every pixel of out exactly once per frame */
     RETRO_KF_THREADED = 1u << 1,   /* uses more than one thread */
+    /* its worker threads belong to the context (retro_ctx), not to the process: two contexts
+     * rendering with it keep two sets of workers, which compete for the cores */
+    RETRO_KF_CTX_THREADS = 1u << 2,
 };
 
 /* A family of kernels: kernels that render the same frames from the same frame constants and

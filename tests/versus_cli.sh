@@ -56,9 +56,12 @@ grep -q 'no-such-map' "$tmp/err" || fail "the MAP in ARGS was not the second's: 
   fail "--versus with -o"
 cmp -s "$tmp/alone.ppm" "$tmp/v.ppm" || fail "--versus -o did not write the first configuration's frame"
 
-# two threaded kernels on two threads each would slow each other: refused; one thread is fine
+# two sets of workers on two threads each would slow each other: refused; one thread is fine, and
+# so is omp against itself (libgomp's workers belong to the process)
 "$retro" render $map $frame -k omp --threads 2 --time 2 --versus "-k pthreads --threads 1" >/dev/null 2>"$tmp/err" ||
   fail "omp beside pthreads on one thread: $(cat "$tmp/err")"
+"$retro" render $map $frame -k omp --threads 2 --time 2 --versus "--no-skip" >/dev/null 2>"$tmp/err" ||
+  fail "omp beside itself: $(cat "$tmp/err")"
 
 # bad requests: exit 2, one line on stderr, nothing on stdout, no image
 bad() {
@@ -84,6 +87,7 @@ bad "--versus two maps" --time 2 --versus "maps/test/flat-64 maps/test/flat-1"
 bad "--versus missing map" --time 2 --versus "maps/test/no-such-map"
 bad "--versus bad value" --time 2 --versus "--threads 0"
 bad "omp beside pthreads" -k omp --threads 2 --time 2 --versus "-k pthreads"
+bad "pthreads beside itself" -k pthreads --threads 2 --time 2 --versus "--no-skip"
 
 echo "versus cli: $fails failures"
 [ "$fails" -eq 0 ]

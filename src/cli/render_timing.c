@@ -44,12 +44,14 @@ static void time_line(const char *prefix, const render_job *j, double *ms, long 
            median_sorted(ms, n), ms[0], n);
 }
 
-/* Whether a and b run different threaded kernels, each on more than one thread. Workers that
- * wait for the next frame by spinning (libgomp's do, for a while) take the core the other
- * kernel's threads need: pthreads beside omp ran several times slower (docs/COMMANDS.md). */
+/* Whether a and b keep two sets of workers, each on more than one thread: different threaded
+ * kernels, or one whose workers belong to the context (each job has its own). Workers that wait
+ * for the next frame by spinning (libgomp's and the pthreads pool's do, for a while) take the
+ * core the other set needs: pthreads beside omp ran several times slower (docs/COMMANDS.md). */
 static int pools_clash(const render_job *a, const render_job *b)
 {
-    return a->k != b->k && (a->k->flags & RETRO_KF_THREADED) && (b->k->flags & RETRO_KF_THREADED) &&
+    const unsigned t = RETRO_KF_THREADED;
+    return (a->k != b->k || (a->k->flags & RETRO_KF_CTX_THREADS)) && (a->k->flags & t) && (b->k->flags & t) &&
            retro_ctx_threads(a->rc) > 1 && retro_ctx_threads(b->rc) > 1;
 }
 
@@ -82,8 +84,8 @@ int render_versus(render_job *a, const player_t *pa, render_job *b, const player
     if (!e && pools_clash(a, b)) {
         free(ms);
         return cli_error("render",
-                         "--versus cannot time two threaded kernels (%s, %s) on more than one thread each: one's "
-                         "idle workers can slow the other's frames; time them in separate runs",
+                         "--versus cannot time %s and %s on more than one thread each: each keeps its own workers, "
+                         "and one's idle workers can slow the other's frames; time them in separate runs",
                          a->k->name, b->k->name);
     }
     /* Two kernels: each timed frame after an untimed one of its own (timed_frame). One kernel

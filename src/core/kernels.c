@@ -46,7 +46,7 @@ const retro_kernel retro_kernels[] = {
      STRIP(simd_avx512), RETRO_STRIP_FX_SIMD, VOXEL},
     /* The threaded kernels run the frame's strip (retro_frame.strip), chosen by frame setup
      * from the strip table, not from these rows. */
-    {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
+    {"pthreads", retro_kernel_pthreads, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED | RETRO_KF_CTX_THREADS,
      "column chunks on POSIX threads kept by the context: the submission's engine", NULL, FX_ALL, VOXEL},
     {"omp", retro_kernel_omp, 0, ALL, RETRO_KF_WRITE_ONCE | RETRO_KF_THREADED,
      "column chunks on every core (OpenMP, pinned with hwloc), each the best strip", NULL, FX_ALL, VOXEL},
