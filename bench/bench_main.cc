@@ -432,8 +432,10 @@ int main(int argc, char **argv)
         retime(plan, &retimer, &progress, opt, quick);
     retro_ctx_free(live.rc); // its workers, if any, leave the cores to the pairs below
     live.rc = nullptr;
-    if (ran)
+    if (ran) {
         skip_large_in_turn(&plan, bind_for);
+        extras_in_turn(&plan, bind_for);
+    }
     int status = ran ? 0 : 1;
     // before Shutdown(), which frees the custom context the JSON's header reads
     if (progress.cases_done() > 0 && !json.empty() && !progress.write_json(json))

@@ -71,8 +71,9 @@ struct BenchCase {
     double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
     double done_at = std::numeric_limits<double>::quiet_NaN(); // seconds into the run when it finished
-    // A --no-skip twin of the large-frame table (skip_large.h): its frames and its twin's timed
-    // in turn after the run, the median and quartiles of the per-pair ratios (without / with).
+    // The median and quartiles of the ratios of this case's frames to another's, timed in turn
+    // after the run (in_turn.h): the large-frame table's twins without skipping (skip_large.h),
+    // the effect table's fastest kernel for each effect set against none (extras.h).
     double in_turn = std::numeric_limits<double>::quiet_NaN();
     double in_turn_q1 = std::numeric_limits<double>::quiet_NaN();
     double in_turn_q3 = std::numeric_limits<double>::quiet_NaN();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bench_report.h"
+#include "in_turn.h"
 
 extern "C" {
 // bench/course_painter.c, built with the course's -O3: the baseline of the submission target.
@@ -162,21 +163,50 @@ static void submission_table(std::ostream &o, const BenchPlan &plan)
     }
 }
 
-static void effects_table(std::ostream &o, const BenchPlan &plan)
+// The scene of the effect cases, or nullptr when none was planned.
+static const bench_scene *effects_scene(const BenchPlan &plan)
 {
     const bench_scene *s = nullptr;
     for (const auto &c : plan.cases)
         if (c->groups & GROUP_EFFECTS)
             s = c->scene;
+    return s;
+}
+
+void extras_in_turn(BenchPlan *plan, void (*bind)(int threads))
+{
+    const bench_scene *s = effects_scene(*plan);
+    if (!s)
+        return;
+    const BenchCase *none = find(*plan, GROUP_EFFECTS, s, "none", retro_kernel_best_fx(RETRO_MODE_EXACT, &effects[0]));
+    if (!case_timed(none))
+        return;
+    int n = 0;
+    for (int i = 1; i < n_sets; i++) {
+        const retro_kernel *best = retro_kernel_best_fx(RETRO_MODE_EXACT, &effects[i]);
+        auto *c = const_cast<BenchCase *>(find(*plan, GROUP_EFFECTS, s, effect_sets[i].label, best));
+        n += case_timed(c) && in_turn(none, c, EFFECT_PAIRS, bind);
+    }
+    std::fprintf(stderr, "  effects on %s: %d sets timed in turn against none, %d pairs each\n", s->name, n,
+                 EFFECT_PAIRS);
+}
+
+static void effects_table(std::ostream &o, const BenchPlan &plan)
+{
+    const bench_scene *s = effects_scene(plan);
     if (!s)
         return;
     const retro_kernel *yb = retro_kernel_find("ybuffer");
     double yb_none = ms_of(find(plan, GROUP_EFFECTS, s, "none", yb));
     o << "\n### What each effect costs (mode exact, " << s->name << ", " << plan.W << "×" << plan.H << ", D "
       << plan.D << ")\n\nmedian ms/frame; cost: ybuffer against itself with no effect, and the fastest "
-         "kernel for the effects against the fastest with none (×). Baked effects (shade, water, "
-         "morph) are paid once per change of their inputs, not per frame.\n\n"
-      << "| effects | ybuffer | cost | fastest kernel for them | ms | cost |\n|---|--:|--:|---|--:|--:|\n";
+         "kernel for the effects against the fastest with none (×); in turn: the same, from "
+      << EFFECT_PAIRS
+      << " pairs of the two frames timed one after the other after the run, the median of the per-pair "
+         "ratios (quartiles in brackets), which a change in the machine's speed moves less. Baked effects "
+         "(shade, water, morph) are paid once per change of their inputs, not per frame.\n\n"
+      << "| effects | ybuffer | cost | fastest kernel for them | ms | cost | in turn |\n"
+         "|---|--:|--:|---|--:|--:|--:|\n";
     double best_none = std::nan("");
     for (int i = 0; i < n_sets; i++) {
         const retro_kernel *best = retro_kernel_best_fx(RETRO_MODE_EXACT, &effects[i]);
@@ -186,7 +216,9 @@ static void effects_table(std::ostream &o, const BenchPlan &plan)
             best_none = m;
         // Relative to no effects: ybuffer against itself; the fastest kernel for the effects
         // against the fastest for none, which per-sample effects can make a slower kernel.
-        char c1[32] = "–", c2[32] = "–";
+        char c1[32] = "–", c2[32] = "–", c3[64] = "–";
+        if (i && b && !std::isnan(b->in_turn))
+            std::snprintf(c3, sizeof c3, "%.2f× (%.2f–%.2f)", b->in_turn, b->in_turn_q1, b->in_turn_q3);
         if (i && !std::isnan(y))
             std::snprintf(c1, sizeof c1, "%+.0f%%", 100 * (y / yb_none - 1));
         if (i && !std::isnan(m))
@@ -194,7 +226,7 @@ static void effects_table(std::ostream &o, const BenchPlan &plan)
         std::string who = std::string(best->name) + (b && (best->flags & RETRO_KF_THREADED) ? ", " +
                           std::to_string(b->threads) + " threads" : "");
         o << "| " << effect_sets[i].label << " | " << report_ms_cell(y) << " | " << c1 << " | " << who << " | " << report_ms_cell(m)
-          << " | " << c2 << " |\n";
+          << " | " << c2 << " | " << c3 << " |\n";
     }
     double off = ms_of(find(plan, GROUP_EFFECTS, s, "none", &noeffects_row));
     if (!std::isnan(off) && !std::isnan(yb_none))

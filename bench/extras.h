@@ -23,6 +23,11 @@ constexpr double SUBMISSION_RUN_SECONDS = 0.5;
 // effect table on islands. Call after plan_cases().
 void plan_extras(BenchPlan *plan);
 
+// After the run: the fastest kernel for each effect set against the fastest for none, EFFECT_PAIRS
+// pairs of frames timed in turn (in_turn.h); one line on stderr.
+enum { EFFECT_PAIRS = 50 };
+void extras_in_turn(BenchPlan *plan, void (*bind)(int threads));
+
 // The two tables, for BENCH.md; nothing when the cases were not planned.
 void extras_tables(std::ostream &o, const BenchPlan &plan);
 

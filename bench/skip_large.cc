@@ -2,13 +2,13 @@
 #include "skip_large.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "bench_report.h"
+#include "in_turn.h"
 
 static const retro_kernel *omp_kernel()
 {
@@ -32,65 +32,19 @@ static const BenchCase *ran(const BenchCase *c)
     return c && c->ran && c->error.empty() ? c : nullptr;
 }
 
-// One frame of c (or, with no_skip, of its twin's frame with skipping off) in ms; NaN if it fails.
-static double timed(retro_ctx *rc, const BenchCase *c, bool no_skip, uint32_t *out)
-{
-    using clock = std::chrono::steady_clock;
-    const bench_scene *s = c->scene;
-    player_t p = s->pose;
-    ctx_t frame = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out};
-    retro_render_opts o = retro_render_opts_default();
-    o.mode = c->mode;
-    o.threads = c->threads;
-    o.no_skip = no_skip;
-    const clock::time_point t0 = clock::now();
-    if (retro_render(rc, c->kernel, &o, &p, &frame) != RETRO_OK)
-        return std::nan("");
-    return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-}
-
 void skip_large_in_turn(BenchPlan *plan, void (*bind)(int threads))
 {
     const retro_kernel *k = omp_kernel();
     if (!k)
         return;
     int t = plan_thread_counts(k, plan->cores).back();
-    std::vector<uint32_t> out(static_cast<size_t>(SKIP_LARGE_W) * SKIP_LARGE_H);
     for (const bench_scene *s : plan->scenes) {
         const BenchCase *on = ran(plan->find(k, t, s, RETRO_MODE_EXACT, SKIP_LARGE_W, SKIP_LARGE_H, SKIP_LARGE_D));
         BenchCase *off = const_cast<BenchCase *>(
             ran(plan->find(k, t, s, RETRO_MODE_EXACT, SKIP_LARGE_W, SKIP_LARGE_H, SKIP_LARGE_D, true)));
-        if (!on || !off)
-            continue;
-        retro_ctx *rc = retro_ctx_new();
-        if (!rc)
-            return;
-        bind(t);
-        std::vector<double> ratio;
-        bool failed = std::isnan(timed(rc, on, false, out.data())) || std::isnan(timed(rc, on, true, out.data()));
-        for (int i = 0; i < SKIP_LARGE_PAIRS && !failed; i++) {
-            double a, b;
-            if (i % 2) { // every other pair the other way round: neither always goes first
-                b = timed(rc, on, true, out.data());
-                a = timed(rc, on, false, out.data());
-            } else {
-                a = timed(rc, on, false, out.data());
-                b = timed(rc, on, true, out.data());
-            }
-            failed = std::isnan(a) || std::isnan(b);
-            if (!failed)
-                ratio.push_back(b / a);
-        }
-        retro_ctx_free(rc);
-        if (failed || ratio.empty())
-            continue;
-        std::sort(ratio.begin(), ratio.end());
-        size_t n = ratio.size();
-        off->in_turn = n % 2 ? ratio[n / 2] : 0.5 * (ratio[n / 2 - 1] + ratio[n / 2]);
-        off->in_turn_q1 = ratio[n / 4];
-        off->in_turn_q3 = ratio[3 * n / 4];
-        std::fprintf(stderr, "  skipping at %dx%d, D %d, %s: %zu pairs timed in turn, ratio %.2f\n", SKIP_LARGE_W,
-                     SKIP_LARGE_H, SKIP_LARGE_D, s->name, n, off->in_turn);
+        if (on && off && in_turn(on, off, SKIP_LARGE_PAIRS, bind))
+            std::fprintf(stderr, "  skipping at %dx%d, D %d, %s: %d pairs timed in turn, ratio %.2f\n", SKIP_LARGE_W,
+                         SKIP_LARGE_H, SKIP_LARGE_D, s->name, SKIP_LARGE_PAIRS, off->in_turn);
     }
 }
 

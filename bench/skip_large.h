@@ -13,13 +13,8 @@ enum { SKIP_LARGE_W = 1920, SKIP_LARGE_H = 1080, SKIP_LARGE_D = 4000 };
 // Adds the pairs for the plan's scenes when mode exact is planned and omp exists.
 void plan_skip_large(BenchPlan *plan);
 
-// Pairs of frames timed in turn after the run: per scene whose two cases ran, SKIP_LARGE_PAIRS
-// pairs, the case with skipping then its twin, the next pair the other way round, in a context
-// of their own (the kernel is the same, so each leaves the other its workers and caches). The
-// machine's speed changes within seconds on a shared VM, so the two medians of the table, taken
-// minutes apart, can be off in their ratio by what the cases' own spread does not show; a
-// change falls on both frames of a pair alike. Fills the twin's in_turn fields. Prints one line
-// per scene on stderr. bind(threads) pins the bench thread as the cases were.
+// After the run, per scene whose two cases ran: SKIP_LARGE_PAIRS pairs of their frames timed in
+// turn (in_turn.h), into the twin without skipping; one line per scene on stderr.
 enum { SKIP_LARGE_PAIRS = 30 };
 void skip_large_in_turn(BenchPlan *plan, void (*bind)(int threads));
 

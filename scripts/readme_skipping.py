@@ -26,14 +26,18 @@ def skip_large_block(t):
         return None
     what = key[len("Occlusion skipping at a large frame"):].strip().strip("()")
     ratio = times(geo[head.index("ratio")])
+    turn = ("; in turn: the median ratio of pairs of the two frames timed one after the other after the run, "
+            "with its quartiles" if "in turn" in head else "")
     lines = [f"At a large frame ({what}), median ms per frame with the kernel's default skipping "
-             "and with it off (`--no-skip`), timed side by side in the same run:", "",
+             f"and with it off (`--no-skip`), timed side by side in the same run{turn}:", "",
              "| " + " | ".join(head) + " |", "|---|" + "--:|" * (len(head) - 1)]
     lines += ["| " + " | ".join(r) + " |" for r in rows]
     per = [times(r[head.index("ratio")]) for r in rows if r is not geo and r[head.index("ratio")] != "–"]
+    turn = geo[head.index("in turn")] if "in turn" in head else "–"
+    beside = f"; timed in turn, {turn}" if turn.endswith("×") else ""
     lines += ["", f"- **Target: at 1920×1080, D 4000, `omp` at least 4× faster than without skipping** "
-              f"(geometric mean over the scenes): {ratio:.2f}× ({min(per):.2f}× to {max(per):.2f}× per scene) "
-              f"— {verdict(ratio >= 4)}."]
+              f"(geometric mean over the scenes): {ratio:.2f}× ({min(per):.2f}× to {max(per):.2f}× per scene"
+              f"{beside}) — {verdict(ratio >= 4)}."]
     return "\n".join(lines)
 
 

@@ -80,6 +80,16 @@ check "$tmp/large/out" 'flat-64: 30 pairs timed in turn, ratio [0-9.]*$' "no pro
 grep '^| flat-64 | ' "$tmp/large/BENCH.md" | sed 's/[×()–|]/ /g' | awk '{ exit !($6 <= $5 && $5 <= $7) }' ||
   { echo "FAIL: the in-turn ratio is not between its quartiles: $(grep '^| flat-64 | ' "$tmp/large/BENCH.md")"; fail=1; }
 
+# The effect table's ratios timed in turn after the run (bench/in_turn.h): bilinear's fastest
+# kernel against none's, the median between its quartiles; islands is a default scene.
+run_bench "$tmp/fx" " on the effect pairs" --benchmark_filter='^effects/islands/(none|bilinear)/'
+check "$tmp/fx/BENCH.md" '^| bilinear | [0-9.]* | [-+0-9]*% | [^|]* | [0-9.]* | [0-9.]*× | [0-9.]*× ([0-9.]*–[0-9.]*) |$' \
+  "no bilinear row with a ratio timed in turn"
+check "$tmp/fx/out" 'effects on islands: 1 sets timed in turn against none, 50 pairs each' "no progress line for the effect pairs"
+grep '^| bilinear | ' "$tmp/fx/BENCH.md" | sed 's/.*| \([0-9.]*\)× (\([0-9.]*\)–\([0-9.]*\)) |$/\1 \2 \3/' |
+  awk 'NF == 3 { ok = $2 <= $1 && $1 <= $3 } END { exit !ok }' ||
+  { echo "FAIL: bilinear's in-turn ratio is not between its quartiles: $(grep '^| bilinear | ' "$tmp/fx/BENCH.md")"; fail=1; }
+
 # Machine steadiness (bench/steady.h): the reference frame at checkpoints through the run, at one
 # thread and at every core, each with its median, and the spread per thread count.
 run_bench "$tmp/steady" " on the checkpoints" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
