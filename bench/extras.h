@@ -25,7 +25,7 @@ void plan_extras(BenchPlan *plan);
 
 // After the run: the fastest kernel for each effect set against the fastest for none, EFFECT_PAIRS
 // pairs of frames timed in turn (in_turn.h); one line on stderr.
-enum { EFFECT_PAIRS = 50 };
+enum { EFFECT_PAIRS = 200 };
 void extras_in_turn(BenchPlan *plan, void (*bind)(int threads));
 
 // The two tables, for BENCH.md; nothing when the cases were not planned.

@@ -15,7 +15,7 @@ void plan_skip_large(BenchPlan *plan);
 
 // After the run, per scene whose two cases ran: SKIP_LARGE_PAIRS pairs of their frames timed in
 // turn (in_turn.h), into the twin without skipping; one line per scene on stderr.
-enum { SKIP_LARGE_PAIRS = 30 };
+enum { SKIP_LARGE_PAIRS = 150 };
 void skip_large_in_turn(BenchPlan *plan, void (*bind)(int threads));
 
 // BENCH.md's table: per scene the two medians, their ratio and the samples each evaluates, and

@@ -76,7 +76,7 @@ check "$tmp/large/BENCH.md" '^### Occlusion skipping at a large frame (`omp`, [0
 check "$tmp/large/BENCH.md" '^| flat-64 | [0-9.]* | [0-9.]* | [0-9.]*× | [0-9.]*× ([0-9.]*–[0-9.]*) | ' \
   "no large-frame row with a ratio and one timed in turn"
 check "$tmp/large/BENCH.md" '^| geomean (1 scenes) | [0-9.]* | [0-9.]* | [0-9.]*× | [0-9.]*× |' "no large-frame geometric mean"
-check "$tmp/large/out" 'flat-64: 30 pairs timed in turn, ratio [0-9.]*$' "no progress line for the pairs timed in turn"
+check "$tmp/large/out" 'flat-64: 150 pairs timed in turn, ratio [0-9.]*$' "no progress line for the pairs timed in turn"
 grep '^| flat-64 | ' "$tmp/large/BENCH.md" | sed 's/[×()–|]/ /g' | awk '{ exit !($6 <= $5 && $5 <= $7) }' ||
   { echo "FAIL: the in-turn ratio is not between its quartiles: $(grep '^| flat-64 | ' "$tmp/large/BENCH.md")"; fail=1; }
 
@@ -85,7 +85,7 @@ grep '^| flat-64 | ' "$tmp/large/BENCH.md" | sed 's/[×()–|]/ /g' | awk '{ exi
 run_bench "$tmp/fx" " on the effect pairs" --benchmark_filter='^effects/islands/(none|bilinear)/'
 check "$tmp/fx/BENCH.md" '^| bilinear | [0-9.]* | [-+0-9]*% | [^|]* | [0-9.]* | [0-9.]*× | [0-9.]*× ([0-9.]*–[0-9.]*) |$' \
   "no bilinear row with a ratio timed in turn"
-check "$tmp/fx/out" 'effects on islands: 1 sets timed in turn against none, 50 pairs each' "no progress line for the effect pairs"
+check "$tmp/fx/out" 'effects on islands: 1 sets timed in turn against none, 200 pairs each' "no progress line for the effect pairs"
 grep '^| bilinear | ' "$tmp/fx/BENCH.md" | sed 's/.*| \([0-9.]*\)× (\([0-9.]*\)–\([0-9.]*\)) |$/\1 \2 \3/' |
   awk 'NF == 3 { ok = $2 <= $1 && $1 <= $3 } END { exit !ok }' ||
   { echo "FAIL: bilinear's in-turn ratio is not between its quartiles: $(grep '^| bilinear | ' "$tmp/fx/BENCH.md")"; fail=1; }

@@ -158,9 +158,9 @@ static int print_stats(render_job *j, const player_t *p)
 
 /* o2 for --versus ARGS: the first configuration's words (args[0..n), flags taken out) and
  * ARGS' words after them, parsed as the first were, without the first's MAP (map) when ARGS
- * names one; --no-skip among them sets *no_skip. Options
- * that would write, count, time or set a process-wide ISA level are refused. Returns 0,
- * CLI_EBADINPUT after the one-line error. o2's strings point into argv and buf. */
+ * names one; --no-skip among them sets *no_skip. Options that would write, count, time or set
+ * a process-wide ISA level are refused. Returns 0, CLI_EBADINPUT after the one-line error.
+ * o2's strings point into argv and buf. */
 static int versus_opts(const char *versus, char **args, int n, const char *map, char *buf, size_t bufsize,
                        render_opts *o2, int *no_skip)
 {
@@ -219,7 +219,7 @@ int cmd_render(int argc, char **argv)
     render_outputs outs = {NULL, NULL};
     render_opts o;
     render_opts_init(&o);
-    /* The two flags without a value are taken out before the shared parser sees argv. */
+    /* The flags the shared parser does not know are taken out before it sees argv. */
     int no_skip = 0, stats = 0, n = 0;
     long time_n = 0; /* --time: frames to time, 0 when not asked */
     const char *versus = NULL; /* --versus ARGS */
