@@ -4,10 +4,7 @@
 # paint in each column either way; bad input exits 2 and writes neither the CSV nor the image.
 set -u
 retro=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. tests/lib/cli_test.sh
 map=maps/test/alpine-200
 view="-s 160x120 -d 400 -p 100,100 -a 30"
 num() { sed -n "s/^$1: \([0-9]*\).*/\1/p" "$2"; }

@@ -3,10 +3,7 @@
 # that add up: as many samples paint with skipping as without, fewer are evaluated.
 set -u
 retro=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. tests/lib/cli_test.sh
 map=maps/test/alpine-200
 args="-s 160x120 -d 400 -p 100,100 -a 30 -o"
 

@@ -6,10 +6,7 @@
 # and write nothing. Timings are never checked: only what was timed and how it is reported.
 set -u
 retro=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. tests/lib/cli_test.sh
 map=maps/test/alpine-200
 frame="-s 32x24 -d 50 -p 100,100"
 num='[0-9]+\.[0-9]+'
