@@ -48,18 +48,11 @@ struct Side {
     }
 };
 
-bool two_sets_of_workers(const BenchCase *a, const BenchCase *b)
-{
-    const unsigned t = RETRO_KF_THREADED;
-    return (a->kernel != b->kernel || (a->kernel->flags & RETRO_KF_CTX_THREADS)) && (a->kernel->flags & t) &&
-           (b->kernel->flags & t) && a->threads > 1 && b->threads > 1;
-}
-
 } // namespace
 
 bool in_turn(const BenchCase *a, BenchCase *b, int pairs, void (*bind)(int threads))
 {
-    if (a->direct || b->direct || pairs < 1 || two_sets_of_workers(a, b))
+    if (a->direct || b->direct || pairs < 1 || retro_kernels_two_pools(a->kernel, a->threads, b->kernel, b->threads))
         return false;
     bind(std::max(a->threads, b->threads));
     Side sa(a), sb(b);

@@ -163,6 +163,11 @@ extern const retro_family retro_family_voxel;
 extern const retro_family retro_family_mesh; /* include/retro_mesh.h, docs/MESH.md */
 
 const retro_kernel *retro_kernel_find(const char *name);
+/* Whether frames of kernel a on ta threads and of kernel b on tb threads, rendered in turn by
+ * two contexts, keep two sets of workers that compete for the cores (one set's idle workers
+ * spin while the other renders): different threaded kernels, or one with RETRO_KF_CTX_THREADS,
+ * each on more than one thread. Timing such frames in turn measures the competition. */
+int retro_kernels_two_pools(const retro_kernel *a, int ta, const retro_kernel *b, int tb);
 const retro_family *retro_family_find(const char *name);
 /* The family's reference kernel. */
 const retro_kernel *retro_family_reference(const retro_family *fam);

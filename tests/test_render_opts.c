@@ -230,3 +230,27 @@ Test(render_opts, the_lod_rate_lives_in_the_options)
     free(b);
     retro_map_free(&m);
 }
+
+/* Which pairs of configurations timed in turn would keep two competing sets of workers
+ * (retro_kernels_two_pools): the rule render --versus and the benchmark's pairs refuse by. */
+Test(render_opts, two_sets_of_workers_are_named)
+{
+    static const struct {
+        const char *a;
+        int ta;
+        const char *b;
+        int tb, two;
+    } cases[] = {
+        {"omp", 2, "omp", 2, 0},           /* libgomp's workers belong to the process */
+        {"pthreads", 2, "pthreads", 2, 1}, /* each context keeps its own pool */
+        {"pthreads", 2, "pthreads", 1, 0}, {"omp", 2, "pthreads", 2, 1}, {"pthreads", 2, "omp", 2, 1},
+        {"omp", 2, "pthreads", 1, 0},      {"omp", 1, "pthreads", 2, 0}, {"omp", 2, "ybuffer", 1, 0},
+        {"ybuffer", 1, "naive", 1, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const retro_kernel *a = retro_kernel_find(cases[i].a), *b = retro_kernel_find(cases[i].b);
+        cr_assert(a && b);
+        cr_expect_eq(retro_kernels_two_pools(a, cases[i].ta, b, cases[i].tb), cases[i].two, "%s on %d, %s on %d",
+                     cases[i].a, cases[i].ta, cases[i].b, cases[i].tb);
+    }
+}

@@ -44,15 +44,11 @@ static void time_line(const char *prefix, const render_job *j, double *ms, long 
            median_sorted(ms, n), ms[0], n);
 }
 
-/* Whether a and b keep two sets of workers, each on more than one thread: different threaded
- * kernels, or one whose workers belong to the context (each job has its own). Workers that wait
- * for the next frame by spinning (libgomp's and the pthreads pool's do, for a while) take the
- * core the other set needs: pthreads beside omp ran several times slower (docs/COMMANDS.md). */
+/* Two sets of workers, each on more than one thread, slow each other's frames (pthreads beside
+ * omp ran several times slower: docs/COMMANDS.md). */
 static int pools_clash(const render_job *a, const render_job *b)
 {
-    const unsigned t = RETRO_KF_THREADED;
-    return (a->k != b->k || (a->k->flags & RETRO_KF_CTX_THREADS)) && (a->k->flags & t) && (b->k->flags & t) &&
-           retro_ctx_threads(a->rc) > 1 && retro_ctx_threads(b->rc) > 1;
+    return retro_kernels_two_pools(a->k, retro_ctx_threads(a->rc), b->k, retro_ctx_threads(b->rc));
 }
 
 int render_time(render_job *j, const player_t *p, long n)

@@ -68,6 +68,12 @@ const retro_kernel retro_kernels[] = {
 
 const size_t retro_kernel_count = sizeof retro_kernels / sizeof retro_kernels[0];
 
+int retro_kernels_two_pools(const retro_kernel *a, int ta, const retro_kernel *b, int tb)
+{
+    const unsigned t = RETRO_KF_THREADED;
+    return (a != b || (a->flags & RETRO_KF_CTX_THREADS)) && (a->flags & t) && (b->flags & t) && ta > 1 && tb > 1;
+}
+
 const retro_kernel *retro_kernel_find(const char *name)
 {
     for (size_t i = 0; i < retro_kernel_count; i++)
