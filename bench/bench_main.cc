@@ -138,23 +138,6 @@ static void time_frames(benchmark::State &st, const BenchCase *c, player_t *p, c
     st.counters[FRAME_MEDIAN_COUNTER] = sorted_median(t);
 }
 
-// The frame a case renders (its pose is c->scene->pose) into out, and what it asks for.
-static ctx_t case_frame(const BenchCase *c, uint32_t *out)
-{
-    const bench_scene *s = c->scene;
-    return {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out};
-}
-
-static retro_render_opts case_opts(const BenchCase *c)
-{
-    retro_render_opts o = retro_render_opts_default();
-    o.mode = c->mode;
-    o.fx = c->fx;
-    o.threads = c->threads;
-    o.no_skip = c->no_skip;
-    return o;
-}
-
 static void run_case(benchmark::State &st, const BenchCase *c)
 {
     if (!retro_kernel_runs_here(c->kernel)) {

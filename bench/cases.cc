@@ -22,6 +22,22 @@ const BenchCase *BenchPlan::find(const retro_kernel *k, int threads, const bench
     return nullptr;
 }
 
+ctx_t case_frame(const BenchCase *c, uint32_t *out)
+{
+    const bench_scene *s = c->scene;
+    return {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out};
+}
+
+retro_render_opts case_opts(const BenchCase *c)
+{
+    retro_render_opts o = retro_render_opts_default();
+    o.mode = c->mode;
+    o.fx = c->fx;
+    o.threads = c->threads;
+    o.no_skip = c->no_skip;
+    return o;
+}
+
 std::vector<int> plan_thread_counts(const retro_kernel *k, int cores)
 {
     std::vector<int> t{1};

@@ -114,6 +114,10 @@ inline int plan_cases_ran(const BenchPlan &plan)
     return n;
 }
 
+// The frame a case renders (its pose is c->scene->pose) into out, and what it asks for.
+ctx_t case_frame(const BenchCase *c, uint32_t *out);
+retro_render_opts case_opts(const BenchCase *c);
+
 // Thread counts a kernel is timed at: 1 unless threaded, else 1, 2, 4 ... and cores.
 std::vector<int> plan_thread_counts(const retro_kernel *k, int cores);
 

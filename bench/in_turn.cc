@@ -13,15 +13,11 @@ struct Side {
     const BenchCase *c;
     retro_ctx *rc = nullptr;
     std::vector<uint32_t> out;
-    retro_render_opts o = retro_render_opts_default();
+    retro_render_opts o;
 
     explicit Side(const BenchCase *cs)
-        : c(cs), rc(retro_ctx_new()), out(static_cast<size_t>(cs->W) * static_cast<size_t>(cs->H))
+        : c(cs), rc(retro_ctx_new()), out(static_cast<size_t>(cs->W) * static_cast<size_t>(cs->H)), o(case_opts(cs))
     {
-        o.mode = c->mode;
-        o.fx = c->fx;
-        o.threads = c->threads;
-        o.no_skip = c->no_skip;
     }
     ~Side() { retro_ctx_free(rc); }
     Side(const Side &) = delete;
@@ -29,9 +25,8 @@ struct Side {
 
     bool frame()
     {
-        const bench_scene *s = c->scene;
-        player_t p = s->pose;
-        ctx_t f = {c->W, c->H, s->map.size, c->D, 0x66a3ff00u, s->map.height, s->map.color, out.data()};
+        player_t p = c->scene->pose;
+        ctx_t f = case_frame(c, out.data());
         return retro_render(rc, c->kernel, &o, &p, &f) == RETRO_OK;
     }
 
