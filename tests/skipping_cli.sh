@@ -18,13 +18,28 @@ num() { sed -n "s/^$1: \([0-9]*\).*/\1/p" "$2"; }
 [ "$(num painting "$tmp/on.txt")" = "$(num painting "$tmp/off.txt")" ] || fail "painting counts differ"
 on=$(num evaluated "$tmp/on.txt"); off=$(num evaluated "$tmp/off.txt")
 [ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "evaluated: $on with skipping, $off without"
-# the ideal bound's line (docs/SKIPPING.md, "How far a max bound can go"): with skipping only,
+# the ideal bounds' lines (docs/SKIPPING.md, "How far a max bound can go"): with skipping only,
 # and evaluating no more than the frame's samples
 grep -q '^ideal max bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.]*% with blocks down to 2 cells$' \
     "$tmp/on.txt" || fail "--stats: no ideal bound line"
 ! grep -q '^ideal' "$tmp/off.txt" || fail "--no-skip --stats printed an ideal bound"
 ideal=$(sed -n 's/^ideal max bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
 awk -v a="$ideal" 'BEGIN { exit !(a > 0 && a <= 100) }' || fail "ideal share '$ideal'"
+# and the plane bound's ("Other bounds at the same granularity"), for plain samples only
+grep -q '^ideal plane bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.]*% with blocks down to 2 cells$' \
+    "$tmp/on.txt" || fail "--stats: no ideal plane bound line"
+plane=$(sed -n 's/^ideal plane bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
+awk -v a="$plane" 'BEGIN { exit !(a > 0 && a <= 100) }' || fail "ideal plane share '$plane'"
+# and the oracle's, which skips exactly the runs none of whose samples paints: no more than the max
+grep -q '^ideal oracle bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.]*% with blocks down to 2 cells$' \
+    "$tmp/on.txt" || fail "--stats: no oracle line"
+oracle=$(sed -n 's/^ideal oracle bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
+awk -v o="$oracle" -v a="$ideal" 'BEGIN { exit !(o > 0 && o <= a) }' || fail "oracle share '$oracle', max '$ideal'"
+printf '[scene]\nmap = %s\n[bilinear]\nenabled = true\n' "$(pwd)/$map" >"$tmp/bil.scene"
+"$retro" render "$tmp/bil.scene" $args "$tmp/bil.ppm" --stats >"$tmp/bil.txt" || fail "render bilinear --stats"
+grep -q '^ideal max bound' "$tmp/bil.txt" || fail "bilinear --stats: no ideal max bound line"
+! grep -q '^ideal plane' "$tmp/bil.txt" || fail "bilinear --stats printed an ideal plane bound"
+grep -q '^ideal oracle' "$tmp/bil.txt" || fail "bilinear --stats: no oracle line"
 # mode course skips in the ybuffer strip too (skip_course.h): --stats says so and counts its probes
 "$retro" render $map -m course $args "$tmp/c.ppm" --stats >"$tmp/con.txt" || fail "render -m course --stats"
 "$retro" render $map -m course --no-skip $args "$tmp/cn.ppm" --stats >"$tmp/coff.txt" || fail "course --no-skip --stats"

@@ -221,19 +221,24 @@ static void ideal_case(retro_mode mode, const char *what, const retro_map *m, pl
     uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     cr_assert(a && b);
     retro_sample_counts t = count(off, mode, 1, m, p, W, H, D, b);
-    for (int l = RETRO_PYR_LMIN; l >= 0; l--) {
-        retro_skip_ideal = l;
-        retro_sample_counts s = count(rc, mode, 0, m, p, W, H, D, a);
-        retro_skip_ideal = -1;
-        cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the ideal bound's frame (blocks down to %d) differs", what,
-                     1 << l);
-        cr_assert_eq(s.painting, t.painting, "%s, blocks down to %d: %llu samples paint, %llu without skipping", what,
-                     1 << l, (unsigned long long)s.painting, (unsigned long long)t.painting);
-        cr_assert_leq(s.evaluated, t.evaluated, "%s, blocks down to %d", what, 1 << l);
-        if (l == 0)
-            cr_assert_eq(s.evaluated, s.painting, "%s: at single cells %llu samples evaluated, %llu paint", what,
-                         (unsigned long long)s.evaluated, (unsigned long long)s.painting);
-    }
+    static const char *const bounds[] = {"max", "plane", "oracle"};
+    for (int kind = RETRO_IDEAL_MAX; kind <= RETRO_IDEAL_ORACLE; kind++)
+        for (int l = RETRO_PYR_LMIN; l >= 0; l--) {
+            const char *bound = bounds[kind];
+            retro_skip_ideal = l;
+            retro_skip_ideal_kind = kind;
+            retro_sample_counts s = count(rc, mode, 0, m, p, W, H, D, a);
+            retro_skip_ideal = -1;
+            retro_skip_ideal_kind = RETRO_IDEAL_MAX;
+            cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the ideal %s bound's frame (blocks down to %d) differs",
+                         what, bound, 1 << l);
+            cr_assert_eq(s.painting, t.painting, "%s, ideal %s bound, blocks down to %d: %llu samples paint, %llu without skipping",
+                         what, bound, 1 << l, (unsigned long long)s.painting, (unsigned long long)t.painting);
+            cr_assert_leq(s.evaluated, t.evaluated, "%s, ideal %s bound, blocks down to %d", what, bound, 1 << l);
+            if (l == 0)
+                cr_assert_eq(s.evaluated, s.painting, "%s, ideal %s bound: at single cells %llu samples evaluated, %llu paint",
+                             what, bound, (unsigned long long)s.evaluated, (unsigned long long)s.painting);
+        }
     free(a);
     free(b);
     retro_ctx_free(rc);
@@ -258,6 +263,53 @@ Test(skipping, ideal_bound)
         ideal_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle + 37, v.height), 96, 72, 700);
         retro_map_free(&m);
     }
+}
+
+/* Square pyramids of side 64 on flat ground, each face a plane of slope 3: the terrain where a
+ * plane bounds a box of cells more tightly than its maximum. */
+static void pyramid_map(retro_map *m, int S)
+{
+    make_map(m, S);
+    for (int j = 0; j < S; j++)
+        for (int i = 0; i < S; i++) {
+            int a = i % 64 - 32, b = j % 64 - 32;
+            int r = (a < 0 ? -a : a) > (b < 0 ? -b : b) ? (a < 0 ? -a : a) : (b < 0 ? -b : b);
+            m->height[(size_t)j * (size_t)S + (size_t)i] = (uint8_t)(r < 30 ? 3 * (30 - r) : 0);
+        }
+}
+
+/* The other bounds of the ideal walk (retro_skip_ideal_kind) are exact on planar faces too, and
+ * there each evaluates fewer samples than the one before: a face rising away from the camera
+ * has its box maximum at the box's far edge, which the plane follows, and the oracle skips
+ * every run none of whose samples paints. */
+Test(skipping, ideal_bounds_on_slopes)
+{
+    retro_map m;
+    pyramid_map(&m, 256);
+    player_t p = at(10.5f, 40.5f, 10, 140);
+    ideal_case(RETRO_MODE_EXACT, "pyramids", &m, p, 160, 120, 500);
+    ideal_case(RETRO_MODE_LOD, "pyramids (mode lod)", &m, p, 160, 120, 500);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
+    uint32_t *out = malloc((size_t)160 * 120 * sizeof *out);
+    cr_assert(out);
+    uint64_t evaluated[3];
+    for (int kind = RETRO_IDEAL_MAX; kind <= RETRO_IDEAL_ORACLE; kind++) {
+        retro_skip_ideal = RETRO_PYR_LMIN;
+        retro_skip_ideal_kind = kind;
+        evaluated[kind] = count(rc, RETRO_MODE_EXACT, 0, &m, p, 160, 120, 500, out).evaluated;
+        retro_skip_ideal = -1;
+        retro_skip_ideal_kind = RETRO_IDEAL_MAX;
+    }
+    cr_assert_lt(evaluated[RETRO_IDEAL_PLANE], evaluated[RETRO_IDEAL_MAX],
+                 "pyramids: the plane bound evaluates %llu samples, the max bound %llu",
+                 (unsigned long long)evaluated[RETRO_IDEAL_PLANE], (unsigned long long)evaluated[RETRO_IDEAL_MAX]);
+    cr_assert_lt(evaluated[RETRO_IDEAL_ORACLE], evaluated[RETRO_IDEAL_PLANE],
+                 "pyramids: the oracle evaluates %llu samples, the plane bound %llu",
+                 (unsigned long long)evaluated[RETRO_IDEAL_ORACLE], (unsigned long long)evaluated[RETRO_IDEAL_PLANE]);
+    free(out);
+    retro_ctx_free(rc);
+    retro_map_free(&m);
 }
 
 /* Low noise terrain (seed) with three spikes placed by st: the probes' queries below. */
@@ -339,6 +391,64 @@ Test(skipping, probe_bound)
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld distances)", skipped);
+}
+
+/* The ideal plane bound on its own (retro_skip_plane_hides): for random frames, columns, runs
+ * and y-buffers on sloped, spiky and seam-crossing terrain, a run it calls hidden has every
+ * sample's row at or below y, brute-forced from each sample's own cell. Runs are boxed as
+ * retro_skip_run boxes them, from the floors at their two ends. */
+Test(skipping, ideal_plane_bound)
+{
+    static const int sizes[] = {5, 37, 64, 100, 256};
+    uint64_t st = 4242;
+    long hidden = 0, runs = 0;
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        int S = sizes[si];
+        retro_map m;
+        if (S == 256)
+            pyramid_map(&m, S);
+        else
+            spiky_map(&m, S, 17 + (uint64_t)S, &st);
+        uint32_t out[1];
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
+        retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+        for (int frame = 0; frame < 60; frame++) {
+            int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
+            int D = 2 + (int)(rng_next(&st) % (unsigned)(6 * S));
+            float x = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f - (float)S;
+            float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
+            player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
+            ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
+            const retro_frame *f;
+            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
+            cr_assert_not_null(f->pyr);
+            for (int q = 0; q < 60; q++) {
+                int u = (int)(rng_next(&st) % (unsigned)W), d = 1 + (int)(rng_next(&st) % (unsigned)(D - 1));
+                int d1 = d + (int)(rng_next(&st) % 24);
+                d1 = d1 < D ? d1 : D - 1;
+                int yb = (int)(rng_next(&st) % (unsigned)H);
+                float rx = f->rx[u], ry = f->ry[u];
+                int I0 = retro_floor(f->x0 + (float)d * rx), I1 = retro_floor(f->x0 + (float)d1 * rx);
+                int J0 = retro_floor(f->y0 + (float)d * ry), J1 = retro_floor(f->y0 + (float)d1 * ry);
+                int I = I0 < I1 ? I0 : I1, J = J0 < J1 ? J0 : J1;
+                int wi = I0 < I1 ? I1 - I0 : I0 - I1, wj = J0 < J1 ? J1 - J0 : J0 - J1;
+                runs++;
+                if (!retro_skip_plane_hides(f->pyr, f, I, J, wi, wj, rx, ry, d, d1, (float)(yb + 1)))
+                    continue;
+                hidden++;
+                for (int dd = d; dd <= d1; dd++) {
+                    size_t idx = retro_exact_sample(f, u, dd);
+                    int v = retro_exact_row(f->kd[dd], f->half_h, H, f->height_map[idx] - f->height);
+                    cr_assert_leq(v, yb, "S %d: column %d, run [%d, %d] called hidden, distance %d has row %d above %d", S,
+                                  u, d, d1, dd, v, yb);
+                }
+            }
+        }
+        retro_ctx_free(rc);
+        retro_map_free(&m);
+    }
+    cr_assert_gt(hidden, runs / 10, "the plane hid %ld of %ld runs", hidden, runs);
 }
 
 /* The probe in mode lod (retro_skip_run over sample indices, distances dist[n]): every index

@@ -46,10 +46,11 @@ static void help(void)
            "  --no-skip   evaluate every sample: no occlusion skipping (docs/SKIPPING.md); the\n"
            "              image is the same, only slower\n"
            "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
-           "              paint, and their share of the frame's samples (W x (D-1)), what an\n"
-           "              ideal max bound would evaluate (docs/SKIPPING.md), and\n"
-           "              simd-avx512's where it runs; mesh: the triangles submitted, after\n"
-           "              culling, after clipping, and the fragments\n"
+           "              paint, and their share of the frame's samples (W x (D-1)), what\n"
+           "              ideal max and plane bounds and an oracle would evaluate\n"
+           "              (docs/SKIPPING.md), and simd-avx512's where it runs; mesh: the\n"
+           "              triangles submitted, after culling, after clipping, and the\n"
+           "              fragments\n"
            "  --columns CSV voxel: write per screen column the samples the ybuffer kernel\n"
            "              evaluates and those that paint, with skipping as asked and without:\n"
            "              column,samples,evaluated,painting,evaluated_noskip,painting_noskip\n"
@@ -124,15 +125,21 @@ static int print_stats(render_job *j, const player_t *p)
     printf("evaluated: %" PRIu64 " (%.2f%%)\n", s->evaluated, all > 0 ? 100.0 * (double)s->evaluated / all : 0.0);
     printf("painting: %" PRIu64 " (%.2f%%)\n", s->painting, all > 0 ? 100.0 * (double)s->painting / all : 0.0);
     printf("probes: %" PRIu64 ", pyramid windows read: %" PRIu64 "\n", s->probes, s->windows);
-    /* How far a max bound could go at all (docs/SKIPPING.md): the same walk with the ideal bound,
-     * with blocks down to 4 cells (the pyramid's finest) and down to 2. */
-    if (retro_skip_applies(f)) {
-        printf("ideal max bound evaluates:");
+    /* How far a bound on runs could go at all (docs/SKIPPING.md): the same walk with the ideal
+     * max bound, a plane and the oracle, with blocks down to 4 cells (the pyramid's finest) and
+     * down to 2. */
+    static const char *const bound[] = {"max", "plane", "oracle"};
+    for (int kind = RETRO_IDEAL_MAX; kind <= RETRO_IDEAL_ORACLE && retro_skip_applies(f); kind++) {
+        if (kind == RETRO_IDEAL_PLANE && (f->fx & RETRO_FX_BILINEAR))
+            continue; /* the plane bounds plain samples only */
+        printf("ideal %s bound evaluates:", bound[kind]);
         for (int l = RETRO_PYR_LMIN; l >= RETRO_PYR_LMIN - 1; l--) {
             memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
             retro_skip_ideal = l;
+            retro_skip_ideal_kind = kind;
             e = retro_render(j->rc, &counted, &j->opts, p, &j->c);
             retro_skip_ideal = -1;
+            retro_skip_ideal_kind = RETRO_IDEAL_MAX;
             if (e)
                 return cli_error("render", "%s", retro_strerror(e));
             printf("%s %.2f%% with blocks down to %d cells", l == RETRO_PYR_LMIN ? "" : ",",

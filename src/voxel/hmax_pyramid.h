@@ -87,6 +87,13 @@ void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
  * so its frames equal naive's. Global like the counts: one thread at a time. */
 extern int retro_skip_ideal;
 enum { RETRO_IDEAL_BOX = 64 };
+/* Which bound the ideal walk tries after its box's maximum (docs/SKIPPING.md, "Other bounds
+ * at the same granularity"): none (RETRO_IDEAL_MAX, the default), a plane above every cell of
+ * the box (retro_skip_plane_hides; plain samples only), or the oracle, which skips a run
+ * exactly when none of its samples paints (retro_skip_oracle_hides): what any bound at all
+ * could do with the same runs. Global like the counts. */
+enum { RETRO_IDEAL_MAX, RETRO_IDEAL_PLANE, RETRO_IDEAL_ORACLE };
+extern int retro_skip_ideal_kind;
 
 /* Whether the ybuffer strip skips this frame: mode exact or lod with a pyramid (any
  * per-sample effects: fog changes colours only, bilinear is covered by the bound). */
@@ -121,7 +128,8 @@ RETRO_HELPER int retro_skip_wrap(int I, int S, const int pow2)
     return i < 0 ? i + S : i;
 }
 
-#ifdef RETRO_COUNT_SAMPLES
+/* The studies' bounds below are used only by the counting build (RETRO_COUNT_SAMPLES); they are
+ * visible everywhere so that tests can check them on their own. */
 /* The largest height of the cells I..I+wi x J..J+wj of the torus of side S (the ideal bound). */
 RETRO_HELPER int retro_skip_box_max(const retro_pyramid *p, int S, int I, int J, int wi, int wj)
 {
@@ -135,7 +143,87 @@ RETRO_HELPER int retro_skip_box_max(const retro_pyramid *p, int S, int I, int J,
     }
     return m;
 }
-#endif
+
+/* Whether no sample of the run at distances [d, d1] of a column (ray rx, ry) can paint above
+ * y (need = y + 1), judged by a plane above the heights of the confirmed box of cells
+ * I..I+wi x J..J+wj (unwrapped floors; the torus only maps them to heights). A study, in
+ * double precision with explicit margins; plain samples only (no bilinear).
+ * Proof. The plane's slopes gx, gy are the box's least-squares gradient and its offset c the
+ * largest residual, so every cell (I+a, J+b) of the box has h <= c + gx a + gy b. A sample at
+ * distance e has qx = fl(x0 + fl(e rx)) within ex = 2^-23 (|x0| + 2 |e rx|) of the real
+ * X(e) = x0 + e rx (two roundings of relative error 2^-24), and its cell a = floor(qx) - I
+ * lies in (X - ex - 1 - I, X + ex - I], so gx a <= gx (X(e) - I) + |gx| ex + max(0, -gx); y
+ * alike. The sum P(e) of these bounds is linear in e, so (half_w / e) (P(e) - height) + half_h
+ * = half_w ((P(0) - height) / e + P') + half_h is monotone in e and largest at e = d or d1.
+ * The kernel's row vf = fl(fl(kd (float)dh) + half_h) with kd = fl(half_w / e) is
+ * non-decreasing in h (retro_skip_run, point 3) and, with four roundings of relative error
+ * 2^-24, exceeds the real (half_w / e) dh + half_h by at most 2^-21 ((half_w / d) |dh|max +
+ * half_h), |dh| <= max(255, |height|) + 255. So when both ends' real rows plus that margin
+ * stay below need, no sample of the run reaches need: it paints nothing (point 4). */
+RETRO_HELPER int retro_skip_plane_hides(const retro_pyramid *p, const retro_frame *f, int I, int J, int wi, int wj,
+                                        float rx, float ry, int d, int d1, float need)
+{
+    const int S = f->S;
+    const double ca = 0.5 * wi, cb = 0.5 * wj;
+    double sah = 0, sbh = 0, saa = 0, sbb = 0;
+    for (int b = 0; b <= wj; b++) {
+        const uint8_t *row = p->map + (size_t)retro_skip_wrap(J + b, S, 0) * (size_t)p->S;
+        for (int a = 0; a <= wi; a++) {
+            const double h = row[retro_skip_wrap(I + a, S, 0)];
+            sah += (a - ca) * h;
+            sbh += (b - cb) * h;
+            saa += (a - ca) * (a - ca);
+            sbb += (b - cb) * (b - cb);
+        }
+    }
+    const double gx = saa > 0 ? sah / saa : 0.0, gy = sbb > 0 ? sbh / sbb : 0.0;
+    double c = -1e300;
+    for (int b = 0; b <= wj; b++) {
+        const uint8_t *row = p->map + (size_t)retro_skip_wrap(J + b, S, 0) * (size_t)p->S;
+        for (int a = 0; a <= wi; a++) {
+            const double r = row[retro_skip_wrap(I + a, S, 0)] - gx * a - gy * b;
+            c = r > c ? r : c;
+        }
+    }
+    const double u2 = 0x1p-23, e1 = d > d1 ? d : d1;
+    const double ex = u2 * (fabs((double)f->x0) + 2.0 * fabs(e1 * rx)),
+                 ey = u2 * (fabs((double)f->y0) + 2.0 * fabs(e1 * ry));
+    const double slack = fabs(gx) * ex + fabs(gy) * ey + (gx < 0 ? -gx : 0.0) + (gy < 0 ? -gy : 0.0);
+    const double height = (double)f->height, half_w = f->half_w, half_h = f->half_h;
+    const double dhmax = (fabs(height) > 255.0 ? fabs(height) : 255.0) + 255.0;
+    const double margin = 0x1p-21 * (half_w / (d < d1 ? d : d1) * dhmax + fabs(half_h)) + 1e-9;
+    for (int k = 0; k < 2; k++) {
+        const double e = k ? d1 : d;
+        const double P = c + gx * ((double)f->x0 + e * rx - I) + gy * ((double)f->y0 + e * ry - J) + slack;
+        if (!(half_w / e * (P - height) + half_h + margin < (double)need))
+            return 0;
+    }
+    return 1;
+}
+
+/* Whether no sample n..n1 of a column (ray rx, ry; distances dist[k], or k when dist is NULL)
+ * rises above y: each sample's row computed as the kernel computes it (retro_skip_ideal_kind's
+ * oracle, a study: it evaluates the run to decide whether to evaluate it). */
+RETRO_HELPER int retro_skip_oracle_hides(const retro_frame *f, float rx, float ry, int n, int n1, const int *dist,
+                                         int bilinear, int y)
+{
+    for (int k = n; k <= n1; k++) {
+        const int e = dist ? dist[k] : k;
+        const float qx = f->x0 + (float)e * rx, qy = f->y0 + (float)e * ry;
+        int v;
+        if (bilinear) {
+            retro_bilerp b;
+            v = retro_exact_row_f(f->kd[e], f->half_h, f->H,
+                                  retro_bilinear_dh(retro_bilinear_height(f, qx, qy, &b), f->height));
+        } else {
+            const size_t idx = (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
+            v = retro_exact_row(f->kd[e], f->half_h, f->H, f->height_map[idx] - f->height);
+        }
+        if (v > y)
+            return 0;
+    }
+    return 1;
+}
 
 /* How far a bilinear height can exceed the largest of its four cells, M: by rounding only.
  * Proof. The filtered height is hf = ((h00*wx + h10*tx)*wy) + ((h01*wx + h11*tx)*ty) in
@@ -234,9 +322,9 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
             const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
 #ifdef RETRO_COUNT_SAMPLES
             /* levels under RETRO_PYR_LMIN have no windows, and their boxes are at most 2 wide */
-            const int M = retro_skip_ideal >= 0 && wi <= RETRO_IDEAL_BOX && wj <= RETRO_IDEAL_BOX
-                              ? retro_skip_box_max(p, S, Imin, Jmin, wi, wj)
-                              : p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+            const int ideal = retro_skip_ideal >= 0 && wi <= RETRO_IDEAL_BOX && wj <= RETRO_IDEAL_BOX;
+            const int M = ideal ? retro_skip_box_max(p, S, Imin, Jmin, wi, wj)
+                                : p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
 #else
             const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
 #endif
@@ -246,7 +334,17 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
             else
                 fdh = (float)((int64_t)M - height);
             const float vf = f->kd[fdh >= 0.0f ? d : d1] * fdh + half_h;
-            if (!(vf >= need)) {
+#ifdef RETRO_COUNT_SAMPLES
+            const int kind = ideal ? retro_skip_ideal_kind : RETRO_IDEAL_MAX;
+            const int hidden =
+                !(vf >= need) ||
+                (kind == RETRO_IDEAL_PLANE && !bilinear &&
+                 retro_skip_plane_hides(p, f, Imin, Jmin, wi, wj, rx, ry, d, d1, need)) ||
+                (kind == RETRO_IDEAL_ORACLE && retro_skip_oracle_hides(f, rx, ry, n, n1, dist, bilinear, y));
+#else
+            const int hidden = !(vf >= need);
+#endif
+            if (hidden) {
                 n = n1 + 1;
                 if (L < lmax)
                     L++;

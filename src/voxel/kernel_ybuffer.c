@@ -42,6 +42,7 @@
 retro_sample_counts retro_ybuffer_counts;
 retro_column_counts *retro_ybuffer_columns;
 int retro_skip_ideal = -1;
+int retro_skip_ideal_kind = RETRO_IDEAL_MAX;
 #define IDEAL_ONE_BY_ONE (retro_skip_ideal >= 0)
 /* Every use has the sample's column in u. */
 #define COUNT_EVAL()                                                                               \
