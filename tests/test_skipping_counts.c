@@ -322,6 +322,25 @@ static void spiky_map(retro_map *m, int S, uint64_t seed, uint64_t *st)
         m->height[rng_next(st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
 }
 
+/* A random frame of map m (side S) for the probe tests: screen up to 200 x 300, D up to
+ * dmul * S, a position within a map's side of the origin (negative x too), any angle, camera
+ * heights from below the ground to above the highest cell; o sets the mode. */
+static const retro_frame *random_frame(retro_ctx *rc, const retro_render_opts *o, const retro_map *m, int dmul,
+                                       uint32_t *out, uint64_t *st)
+{
+    const int S = m->size;
+    int W = 1 + (int)(rng_next(st) % 200), H = 1 + (int)(rng_next(st) % 300);
+    int D = 2 + (int)(rng_next(st) % (unsigned)(dmul * S));
+    float x = (float)(rng_next(st) % 100000) * (float)S / 100000.0f - (float)S;
+    float y = (float)(rng_next(st) % 100000) * (float)S / 100000.0f;
+    player_t p = at(x, y, (int)(rng_next(st) % 360), (int)(rng_next(st) % 300) - 20);
+    ctx_t c = {W, H, S, D, 0, m->height, m->color, out};
+    const retro_frame *f = NULL;
+    cr_assert_eq(retro_frame_prepare(rc, o, &p, &c, &f), RETRO_OK);
+    cr_assert_not_null(f->pyr);
+    return f;
+}
+
 /* The column probe on its own: for random frames, columns, distances and y-buffers, every
  * distance retro_skip_column skips has a row at or below y (brute force from the sample's own
  * cell), across the spike, seam and size cases above. */
@@ -340,15 +359,8 @@ Test(skipping, probe_bound)
         cr_assert(rc);
         retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
         for (int frame = 0; frame < 60; frame++) {
-            int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
-            int D = 2 + (int)(rng_next(&st) % (unsigned)(6 * S));
-            float x = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f - (float)S;
-            float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
-            player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
-            ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
-            const retro_frame *f;
-            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
-            cr_assert_not_null(f->pyr);
+            const retro_frame *f = random_frame(rc, &o, &m, 6, out, &st);
+            const int W = f->W, H = f->H, D = f->D;
             int pow2 = (S & (S - 1)) == 0;
             for (int q = 0; q < 40; q++) {
                 int u = (int)(rng_next(&st) % (unsigned)W), d = 1 + (int)(rng_next(&st) % (unsigned)(D - 1));
@@ -414,15 +426,8 @@ Test(skipping, ideal_plane_bound)
         cr_assert(rc);
         retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
         for (int frame = 0; frame < 60; frame++) {
-            int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
-            int D = 2 + (int)(rng_next(&st) % (unsigned)(6 * S));
-            float x = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f - (float)S;
-            float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
-            player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
-            ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
-            const retro_frame *f;
-            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
-            cr_assert_not_null(f->pyr);
+            const retro_frame *f = random_frame(rc, &o, &m, 6, out, &st);
+            const int W = f->W, H = f->H, D = f->D;
             for (int q = 0; q < 60; q++) {
                 int u = (int)(rng_next(&st) % (unsigned)W), d = 1 + (int)(rng_next(&st) % (unsigned)(D - 1));
                 int d1 = d + (int)(rng_next(&st) % 24);
@@ -468,18 +473,11 @@ Test(skipping, probe_bound_lod)
         retro_ctx *rc = retro_ctx_new();
         cr_assert(rc);
         for (int frame = 0; frame < 60; frame++) {
-            int W = 1 + (int)(rng_next(&st) % 200), H = 1 + (int)(rng_next(&st) % 300);
-            int D = 2 + (int)(rng_next(&st) % (unsigned)(8 * S));
-            float x = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f - (float)S;
-            float y = (float)(rng_next(&st) % 100000) * (float)S / 100000.0f;
-            player_t p = at(x, y, (int)(rng_next(&st) % 360), (int)(rng_next(&st) % 300) - 20);
-            ctx_t c = {W, H, S, D, 0, m.height, m.color, out};
             retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
             o.mode = RETRO_MODE_LOD;
             o.lod = rates[frame % 4];
-            const retro_frame *f = NULL;
-            cr_assert_eq(retro_frame_prepare(rc, &o, &p, &c, &f), RETRO_OK);
-            cr_assert_not_null(f->pyr);
+            const retro_frame *f = random_frame(rc, &o, &m, 8, out, &st);
+            const int W = f->W, H = f->H;
             if (f->ndist < 2)
                 continue;
             for (int q = 0; q < 40; q++) {
