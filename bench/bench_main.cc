@@ -100,10 +100,12 @@ static double count_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
     return counted_frame(&k, n, p, frame);
 }
 
-// Samples the counting ybuffer evaluates with the ideal bound (hmax_pyramid.h,
-// retro_skip_ideal; blocks down to the pyramid's finest): how far any max bound could take
-// skipping on this frame, beside what the kernel evaluates. omp's skipping cases only.
-static double ideal_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
+// Samples the counting ybuffer evaluates with the ideal walk (hmax_pyramid.h,
+// retro_skip_ideal; blocks down to the pyramid's finest) and the bound kind (max, or the
+// oracle that skips exactly the runs that paint nothing): how far any max bound, and any bound
+// at all with those runs, could take skipping on this frame, beside what the kernel evaluates.
+// omp's skipping cases only.
+static double ideal_samples(const BenchCase *c, const player_t *p, ctx_t *frame, int kind)
 {
     if (c->direct || c->mode != RETRO_MODE_EXACT || c->no_skip || std::strcmp(c->kernel->name, "omp") ||
         (c->groups & GROUP_STEADY))
@@ -111,8 +113,10 @@ static double ideal_samples(const BenchCase *c, const player_t *p, ctx_t *frame)
     retro_kernel k = *retro_kernel_find("ybuffer");
     k.fn = retro_kernel_ybuffer_counted;
     retro_skip_ideal = RETRO_PYR_LMIN;
+    retro_skip_ideal_kind = kind;
     double n = counted_frame(&k, &retro_ybuffer_counts, p, frame);
     retro_skip_ideal = -1;
+    retro_skip_ideal_kind = RETRO_IDEAL_MAX;
     return n;
 }
 
@@ -184,9 +188,12 @@ static void run_case(benchmark::State &st, const BenchCase *c)
         st.counters["evaluated/frame"] = evaluated;
         st.counters["evaluated%"] = share_of(c, evaluated);
     }
-    double ideal = ideal_samples(c, &p, &frame);
+    double ideal = ideal_samples(c, &p, &frame, RETRO_IDEAL_MAX);
     if (!std::isnan(ideal))
         st.counters["ideal%"] = share_of(c, ideal);
+    double oracle = ideal_samples(c, &p, &frame, RETRO_IDEAL_ORACLE);
+    if (!std::isnan(oracle))
+        st.counters["oracle%"] = share_of(c, oracle);
     // Inverting a per-iteration rate of 1e-3 gives milliseconds per frame, computed on the
     // same clock (CPU or real) as the case's own time.
     const auto ms_flags = Counter::kIsIterationInvariantRate | Counter::kInvert;

@@ -350,7 +350,7 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
         if yb and ns:
             lines += ["", "`ybuffer` on the distance sweep (alpine, 640×480), ms per frame with and without "
                       "skipping: " + ", ".join(f"{h[i]} {yb[i]} / {ns[i]}" for i in range(2, len(h))) + "."]
-    shares, ideal = {}, {}
+    shares, ideal, oracle = {}, {}, {}
     if raw_json:
         for kernel in ("ybuffer", "omp"):
             ev = {}
@@ -363,6 +363,8 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
                     ev[name.split("/")[1]] = b["evaluated%"]
                     if "ideal%" in b:
                         ideal[name.split("/")[1]] = b["ideal%"]
+                    if "oracle%" in b:
+                        oracle[name.split("/")[1]] = b["oracle%"]
             shares[kernel] = ev
         for kernel, what in (("ybuffer", "`ybuffer` evaluates (one column at a time)"),
                              ("omp", "the SIMD strips evaluate (`simd-avx512`'s, which `omp` runs; a group "
@@ -386,6 +388,13 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
                          "bound can go\") would evaluate "
                          + ", ".join(f"{s} {ideal[s]:.0f}%" for s in scenes if s in ideal) + " in the same run"
                          + (f": above 35% on {', '.join(over)} even so." if over else "."))
+        if oracle:
+            over = [s for s in scenes if s in oracle and oracle[s] > 35]
+            lines.append("  With the same runs, an oracle that skips exactly the runs none of whose samples paints "
+                         "(what any bound at all could do; docs/SKIPPING.md, \"Other bounds at the same "
+                         "granularity\") would evaluate "
+                         + ", ".join(f"{s} {oracle[s]:.1f}%" for s in scenes if s in oracle) + " in the same run"
+                         + (f": above 35% on {', '.join(over)}." if over else "."))
     return "\n".join(lines)
 
 
