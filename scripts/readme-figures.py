@@ -381,20 +381,18 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
         worst = max(ev, key=ev.get)
         lines.append(f"- **Target: samples evaluated ≤ 35% of W×(D−1) on each scene** (`omp`): at most "
                      f"{ev[worst]:.0f}% ({worst}) — {'met' if ev[worst] <= 35 else '**not met**'}.")
+        def bound_line(share, what, digits, over_tail):  # one ideal walk's shares, per scene
+            over = [s for s in scenes if s in share and share[s] > 35]
+            return (f"  {what} would evaluate " + ", ".join(f"{s} {share[s]:.{digits}f}%" for s in scenes if s in share)
+                    + " in the same run" + (f": above 35% on {', '.join(over)}{over_tail}." if over else "."))
         if ideal:
-            over = [s for s in scenes if s in ideal and ideal[s] > 35]
-            lines.append("  An ideal max bound (each run bounded by its own cells, not a block window, down to "
-                         "blocks of 4 cells, a probe before every sample; docs/SKIPPING.md, \"How far a max "
-                         "bound can go\") would evaluate "
-                         + ", ".join(f"{s} {ideal[s]:.0f}%" for s in scenes if s in ideal) + " in the same run"
-                         + (f": above 35% on {', '.join(over)} even so." if over else "."))
+            lines.append(bound_line(ideal, "An ideal max bound (each run bounded by its own cells, not a block window, "
+                                    "down to blocks of 4 cells, a probe before every sample; docs/SKIPPING.md, "
+                                    "\"How far a max bound can go\")", 0, " even so"))
         if oracle:
-            over = [s for s in scenes if s in oracle and oracle[s] > 35]
-            lines.append("  With the same runs, an oracle that skips exactly the runs none of whose samples paints "
-                         "(what any bound at all could do; docs/SKIPPING.md, \"Other bounds at the same "
-                         "granularity\") would evaluate "
-                         + ", ".join(f"{s} {oracle[s]:.1f}%" for s in scenes if s in oracle) + " in the same run"
-                         + (f": above 35% on {', '.join(over)}." if over else "."))
+            lines.append(bound_line(oracle, "With the same runs, an oracle that skips exactly the runs none of whose "
+                                    "samples paints (what any bound at all could do; docs/SKIPPING.md, \"Other "
+                                    "bounds at the same granularity\")", 1, ""))
     return "\n".join(lines)
 
 
