@@ -35,6 +35,19 @@ grep -q '^ideal oracle bound evaluates: [0-9.]*% with blocks down to 4 cells, [0
     "$tmp/on.txt" || fail "--stats: no oracle line"
 oracle=$(sed -n 's/^ideal oracle bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
 awk -v o="$oracle" -v a="$ideal" 'BEGIN { exit !(o > 0 && o <= a) }' || fail "oracle share '$oracle', max '$ideal'"
+# lanes walking alone (docs/SKIPPING.md, "How far a max bound can go"): 16 x each group's busiest
+# column of the walk --columns writes, as a share of the frame's samples, and never below the
+# column walk's own share (a group's busiest column evaluates at least its mean)
+"$retro" render $map $args "$tmp/cols.ppm" --columns "$tmp/cols.csv" || fail "render --columns"
+alone=$(sed -n 's/^lanes walking alone, 16 to a group: \([0-9.]*\)% (each group as many steps as its busiest column)$/\1/p' \
+    "$tmp/on.txt")
+[ -n "$alone" ] || fail "--stats: no lanes walking alone line"
+want=$(awk -F, 'NR > 1 { g = int($1 / 16); if ($3 > m[g]) m[g] = $3; n[g]++; all += $2 }
+    END { for (g in m) s += n[g] * m[g]; printf "%.2f", 100 * s / all }' "$tmp/cols.csv")
+[ "$alone" = "$want" ] || fail "lanes walking alone: --stats says $alone%, the columns give $want%"
+walk=$(sed -n 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$tmp/on.txt")
+awk -v a="$alone" -v w="$walk" 'BEGIN { exit !(a >= w && a <= 100) }' || fail "lanes alone $alone%, column walk $walk%"
+! grep -q '^lanes walking alone' "$tmp/off.txt" || fail "--no-skip --stats printed lanes walking alone"
 printf '[scene]\nmap = %s\n[bilinear]\nenabled = true\n' "$(pwd)/$map" >"$tmp/bil.scene"
 "$retro" render "$tmp/bil.scene" $args "$tmp/bil.ppm" --stats >"$tmp/bil.txt" || fail "render bilinear --stats"
 grep -q '^ideal max bound' "$tmp/bil.txt" || fail "bilinear --stats: no ideal max bound line"

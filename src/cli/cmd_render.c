@@ -13,6 +13,7 @@
 #include "render_timing.h"
 #include "retro_mesh.h"
 #include "scene_args.h"
+#include "ybuffer_columns.h"
 
 static void help(void)
 {
@@ -48,9 +49,10 @@ static void help(void)
            "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
            "              paint, and their share of the frame's samples (W x (D-1)), what\n"
            "              ideal max and plane bounds and an oracle would evaluate\n"
-           "              (docs/SKIPPING.md), and simd-avx512's where it runs; mesh: the\n"
-           "              triangles submitted, after culling, after clipping, and the\n"
-           "              fragments\n"
+           "              (docs/SKIPPING.md), what 16-lane groups whose lanes each walked\n"
+           "              as the ybuffer column does would, and simd-avx512's where it\n"
+           "              runs; mesh: the triangles submitted, after culling, after\n"
+           "              clipping, and the fragments\n"
            "  --columns CSV voxel: write per screen column the samples the ybuffer kernel\n"
            "              evaluates and those that paint, with skipping as asked and without:\n"
            "              column,samples,evaluated,painting,evaluated_noskip,painting_noskip\n"
@@ -103,6 +105,41 @@ static int print_mesh_stats(const render_job *j)
     return 0;
 }
 
+/* What a vector of 16 adjacent columns would evaluate if each lane walked its own distances,
+ * skipping exactly as the ybuffer column walk does (docs/SKIPPING.md, "How far a max bound can
+ * go"): every step still moves all lanes, so a group takes as many steps as its busiest column,
+ * and counts them for its live lanes as the SIMD counting build does. Groups from column 0.
+ * Returns 0 or CLI_EBADINPUT. */
+static int print_lanes_alone(render_job *j, const player_t *p, double all)
+{
+    enum { LANES = 16 };
+    const int W = j->c.scr_width;
+    retro_column_counts *cols = calloc((size_t)W, sizeof *cols);
+    if (!cols)
+        return cli_error("render", "out of memory");
+    retro_kernel counted = *retro_kernel_find("ybuffer");
+    counted.fn = retro_kernel_ybuffer_counted;
+    retro_ybuffer_columns = cols;
+    retro_err e = retro_render(j->rc, &counted, &j->opts, p, &j->c);
+    retro_ybuffer_columns = NULL;
+    if (e) {
+        free(cols);
+        return cli_error("render", "%s", retro_strerror(e));
+    }
+    double steps = 0;
+    for (int u0 = 0; u0 < W; u0 += LANES) {
+        const int width = W - u0 < LANES ? W - u0 : LANES;
+        uint64_t most = 0;
+        for (int u = u0; u < u0 + width; u++)
+            most = cols[u].evaluated > most ? cols[u].evaluated : most;
+        steps += (double)width * (double)most;
+    }
+    free(cols);
+    printf("lanes walking alone, 16 to a group: %.2f%% (each group as many steps as its busiest column)\n",
+           all > 0 ? 100.0 * steps / all : 0.0);
+    return 0;
+}
+
 /* The frame rendered again by the counting build of ybuffer (the same bytes, into the same
  * buffer), and its counts. Returns 0 or CLI_EBADINPUT. */
 static int print_stats(render_job *j, const player_t *p)
@@ -147,6 +184,8 @@ static int print_stats(render_job *j, const player_t *p)
         }
         printf("\n");
     }
+    if (retro_skip_applies(f) && (e = print_lanes_alone(j, p, all)))
+        return e;
     /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
     const retro_kernel *vk = retro_kernel_find("simd-avx512");
     if (vk && retro_kernel_runs_here(vk) && !retro_render_check(vk, &j->opts, NULL, 0)) {
