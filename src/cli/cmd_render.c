@@ -184,8 +184,9 @@ static int print_stats(render_job *j, const player_t *p)
         }
         printf("\n");
     }
-    if (retro_skip_applies(f) && (e = print_lanes_alone(j, p, all)))
-        return e;
+    int r;
+    if (retro_skip_applies(f) && (r = print_lanes_alone(j, p, all)))
+        return r;
     /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
     const retro_kernel *vk = retro_kernel_find("simd-avx512");
     if (vk && retro_kernel_runs_here(vk) && !retro_render_check(vk, &j->opts, NULL, 0)) {
