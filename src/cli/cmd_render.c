@@ -13,7 +13,6 @@
 #include "render_timing.h"
 #include "retro_mesh.h"
 #include "scene_args.h"
-#include "ybuffer_columns.h"
 
 static void help(void)
 {
@@ -117,14 +116,9 @@ static int print_lanes_alone(render_job *j, const player_t *p, double all)
     retro_column_counts *cols = calloc((size_t)W, sizeof *cols);
     if (!cols)
         return cli_error("render", "out of memory");
-    retro_kernel counted = *retro_kernel_find("ybuffer");
-    counted.fn = retro_kernel_ybuffer_counted;
-    retro_ybuffer_columns = cols;
-    retro_err e = retro_render(j->rc, &counted, &j->opts, p, &j->c);
-    retro_ybuffer_columns = NULL;
-    if (e) {
+    if (columns_count(j, p, &j->opts, cols)) {
         free(cols);
-        return cli_error("render", "%s", retro_strerror(e));
+        return CLI_EBADINPUT;
     }
     double steps = 0;
     for (int u0 = 0; u0 < W; u0 += LANES) {

@@ -15,8 +15,7 @@
 #include "render_columns.h"
 #include "ybuffer_columns.h"
 
-/* One counting frame into cols (W entries, zeroed here). */
-static int count_frame(render_job *j, const player_t *p, const retro_render_opts *opts, retro_column_counts *cols)
+int columns_count(render_job *j, const player_t *p, const retro_render_opts *opts, retro_column_counts *cols)
 {
     retro_kernel counted = *retro_kernel_find("ybuffer");
     counted.fn = retro_kernel_ybuffer_counted;
@@ -64,9 +63,9 @@ int columns_stage(render_columns *rc, render_job *j, const player_t *p)
     }
     retro_render_opts noskip = j->opts;
     noskip.no_skip = 1;
-    int r = count_frame(j, p, &j->opts, on);
+    int r = columns_count(j, p, &j->opts, on);
     if (!r)
-        r = count_frame(j, p, &noskip, off);
+        r = columns_count(j, p, &noskip, off);
     int fd = -1;
     if (!r && (fd = retro_out_open(rc->path, tmp, tlen, err, sizeof err)) < 0)
         r = cli_error("render", "%s", err);

@@ -4,6 +4,7 @@
 #define RETRO_RENDER_COLUMNS_H
 
 #include "scene_args.h"
+#include "ybuffer_columns.h"
 
 /* The counts of one frame, staged in a temporary beside the destination until committed. */
 typedef struct render_columns {
@@ -17,6 +18,10 @@ typedef struct render_columns {
  * column's W x (D-1) share (D-1, or the lod distances). Returns 0, or CLI_EBADINPUT after the
  * one-line error (a mesh kernel, a folder or unwritable destination) with nothing written. */
 int columns_stage(render_columns *rc, render_job *j, const player_t *p);
+/* One frame of pose p, rendered with opts by the counting build of ybuffer into j's buffer (the
+ * same bytes), its per-column counts into cols (W entries, zeroed here). Returns 0 or
+ * CLI_EBADINPUT after the error. */
+int columns_count(render_job *j, const player_t *p, const retro_render_opts *opts, retro_column_counts *cols);
 /* Renames the temporary into place (commit) or removes it (!commit). Returns 0 or
  * CLI_EBADINPUT after the error. */
 int columns_finish(render_columns *rc, int commit);
