@@ -181,13 +181,23 @@ static int print_stats(render_job *j, const player_t *p)
     int r;
     if (retro_skip_applies(f) && (r = print_lanes_alone(j, p, all)))
         return r;
-    /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. */
+    /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. Its
+     * groups begin at the first column on a 64-byte line of out (column_chunks.h), so its
+     * counts depend on where the frame lies in memory: the frame goes to a line-aligned buffer
+     * here, whose groups begin at column 0 as the lanes-alone count's do, whatever the
+     * allocator (a sanitizer's included) gave the image. */
     const retro_kernel *vk = retro_kernel_find("simd-avx512");
     if (vk && retro_kernel_runs_here(vk) && !retro_render_check(vk, &j->opts, NULL, 0)) {
         retro_kernel vc = *vk;
         vc.fn = retro_kernel_simd_avx512_counted;
+        ctx_t c = j->c;
+        const size_t bytes = (size_t)c.scr_width * (size_t)c.scr_height * sizeof *c.out;
+        if (!(c.out = aligned_alloc(64, (bytes + 63) / 64 * 64)))
+            return cli_error("render", "out of memory");
         memset(&retro_simd_counts, 0, sizeof retro_simd_counts);
-        if ((e = retro_render(j->rc, &vc, &j->opts, p, &j->c)))
+        e = retro_render(j->rc, &vc, &j->opts, p, &c);
+        free(c.out);
+        if (e)
             return cli_error("render", "%s", retro_strerror(e));
         const retro_sample_counts *v = &retro_simd_counts;
         printf("simd-avx512 evaluated: %" PRIu64 " (%.2f%%), painting: %" PRIu64 ", probes: %" PRIu64
