@@ -1,0 +1,105 @@
+#!/bin/sh
+# docs/SKIPPING.md's tables of counts ("How far a max bound can go": lanes walking alone; "Other
+# bounds at the same granularity") against `retro render --stats` of the same frames, rendered
+# here. Counts are exact and the same on any machine, so a change to the walk, the probe or the
+# counting that moves one fails this test until the table is written again from --stats. Rows of
+# the course's scenes are skipped, with a message, where ../shared/course is absent, and the
+# simd-avx512 columns where this CPU does not run AVX-512.
+set -u
+retro=$1
+. tests/lib/cli_test.sh
+course=${RETRO_SHARED:-../shared}/course
+doc=docs/SKIPPING.md
+
+# scene_args SCENE: the benchmark's map and pose of SCENE (bench/scenes.c)
+scene_args() {
+  case $1 in
+    alpine | islands | canyon) echo "maps/$1" ;;
+    valley) echo "$course/valley -p 997.808716,559.177063 -z 230 -a 0" ;;
+    island) echo "$course/island -p 147.436798,539.899414 -z 88 -a 0" ;;
+    pyramids) echo "$course/pyramids -p 110.388893,887.813843 -z 164 -a 0" ;;
+    *) return 1 ;;
+  esac
+}
+# rows HEADER: the rows of the table under that header line, separator left out
+rows() {
+  awk -v h="$1" '$0 == h { on = 1; getline; next } on && /^\|/ { print; next } on { exit }' "$doc"
+}
+# stats SCENE SIZE D: the path of that frame's --stats output, rendered once
+stats() {
+  out=$tmp/$1-$2-$3.txt
+  if [ ! -f "$out" ]; then
+    # shellcheck disable=SC2046
+    "$retro" render $(scene_args "$1") -s "$2" -d "$3" --stats -o "$tmp/frame.ppm" >"$out" 2>"$tmp/err" ||
+      { fail "$1 $2 D $3: --stats: $(tail -n 1 "$tmp/err")"; : >"$out"; }
+  fi
+  echo "$out"
+}
+pick() { sed -n "$1" "$2"; }
+# check TABLE-ROW WANT GOT: one cell against its --stats value
+check() {
+  [ "$2" = "$3" ] || fail "$doc, $1: the table says $2, --stats gives ${3:-nothing}"
+}
+
+checked=0
+skipped=""
+avx512=1
+"$retro" kernels | awk '$1 == "simd-avx512" && $4 == "yes" { y = 1 } END { exit !y }' || avx512=0
+[ "$avx512" = 1 ] || echo "skip: this CPU does not run AVX-512: the simd-avx512 columns are not checked"
+
+# each_row HEADER: sets label, scene, size, dist and the cells c1.. of every row, then calls row_check
+each_row() {
+  size="" dist=""
+  rows "$1" >"$tmp/rows"
+  [ -s "$tmp/rows" ] || { fail "$doc has no table headed: $1"; return; }
+  while IFS= read -r line; do
+    label=$(printf '%s' "$line" | awk -F'|' '{ gsub(/^ +| +$/, "", $2); print $2 }')
+    scene=${label%%,*}
+    case $label in
+      *,*) # "alpine, 640×480, D 800" sets the frame of the rows below it
+        frame=${label#*, }
+        size=$(printf '%s' "${frame%%,*}" | sed 's/×/x/')
+        dist=${frame##*D } ;;
+    esac
+    scene_args "$scene" >/dev/null || { fail "$doc: unknown scene in row '$label'"; continue; }
+    case $scene in valley | island | pyramids)
+      [ -d "$course" ] || { case " $skipped " in *" $scene "*) ;; *) skipped="$skipped $scene" ;; esac; continue; } ;;
+    esac
+    [ -n "$size" ] && [ -n "$dist" ] || { fail "$doc: row '$label' has no frame above it"; continue; }
+    # the cells after the label, without their % signs
+    set -- $(printf '%s' "$line" | awk -F'|' '{ for (i = 3; i < NF; i++) { gsub(/[ %]/, "", $i); printf "%s ", $i } }')
+    s=$(stats "$scene" "$size" "$dist")
+    row_check "$@"
+    checked=$((checked + 1))
+  done <"$tmp/rows"
+}
+
+# "Other bounds at the same granularity"
+row_check() {
+  check "$label, painting" "$1" "$(pick 's/^painting: [0-9]* (\([0-9.]*\)%)$/\1/p' "$s")"
+  check "$label, ideal max" "$2" "$(pick 's/^ideal max bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, plane" "$3" "$(pick 's/^ideal plane bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, oracle" "$4" "$(pick 's/^ideal oracle bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, oracle at 2 cells" "$5" "$(pick 's/^ideal oracle bound evaluates: .*, \([0-9.]*\)% with blocks down to 2 cells$/\1/p' "$s")"
+  [ "$avx512" = 0 ] ||
+    check "$label, simd-avx512" "$6" "$(pick 's/^simd-avx512 evaluated: [0-9]* (\([0-9.]*\)%).*/\1/p' "$s")"
+}
+each_row '| scene | painting | ideal max | plane | oracle | oracle, blocks down to 2 cells | `simd-avx512` |'
+
+# "How far a max bound can go": the column walk, lanes walking alone, the SIMD groups
+row_check() {
+  check "$label, column walk" "$1" "$(pick 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$s")"
+  alone=$(pick 's/^lanes walking alone, 16 to a group: \([0-9.]*\)% .*/\1/p' "$s")
+  check "$label, lanes walking alone" "$2" "$alone"
+  [ "$avx512" = 1 ] || return 0
+  simd=$(pick 's/^simd-avx512 evaluated: [0-9]* (\([0-9.]*\)%).*/\1/p' "$s")
+  check "$label, simd-avx512" "$3" "$simd"
+  [ -n "$alone" ] && [ -n "$simd" ] &&
+    check "$label, alone / simd-avx512" "$4" "$(awk -v a="$alone" -v s="$simd" 'BEGIN { printf "%.2f", a / s }')"
+}
+each_row '| scene | column walk | lanes walking alone | `simd-avx512` | alone / `simd-avx512` |'
+
+[ -z "$skipped" ] || echo "skip: $course absent: rows of$skipped not checked"
+[ "$checked" -gt 0 ] || fail "no row of $doc's count tables was checked"
+[ "$fails" -eq 0 ] && echo "ok: skipping_doc_counts ($checked rows)"
+[ "$fails" -eq 0 ]
