@@ -45,6 +45,23 @@ else
     grep -q "\(^\|[^0-9.]\)$(printf '%s' "$x" | sed 's/\./\\./')\([^0-9]\|$\)" "$run" ||
       fail "docs/SKIPPING.md quotes $x, which $run does not hold"
   done <"$tmp/figures"
+
+  # the summary "Issue 18's targets against the method's measured limits" quotes the same run
+  # and the count tables further down (which tests/skipping_doc_counts.sh checks): each figure
+  # must be in the run or elsewhere in docs/SKIPPING.md
+  summary="## Issue 18's targets against the method's measured limits"
+  awk -v h="$summary" '/^## /{on = ($0 == h)} on' docs/SKIPPING.md >"$tmp/summary"
+  awk -v h="$summary" '/^## /{on = ($0 == h)} !on' docs/SKIPPING.md >"$tmp/rest"
+  [ -s "$tmp/summary" ] || fail "docs/SKIPPING.md lacks the section '$summary'"
+  grep -q "$commit" "$tmp/summary" || fail "the summary does not name the run's commit $commit"
+  grep -q "$date" "$tmp/summary" || fail "the summary does not name the run's date $date"
+  grep -o '[0-9][0-9]*\.[0-9][0-9]*' "$tmp/summary" | sort -u | grep -vx '0\.10' >"$tmp/figures"
+  [ -s "$tmp/figures" ] || fail "the summary quotes no figure"
+  while read -r x; do
+    re="\(^\|[^0-9.]\)$(printf '%s' "$x" | sed 's/\./\\./')\([^0-9]\|$\)"
+    grep -q "$re" "$run" || grep -q "$re" "$tmp/rest" ||
+      fail "the summary in docs/SKIPPING.md quotes $x, which neither $run nor the rest of the file holds"
+  done <"$tmp/figures"
 fi
 
 [ $fails -eq 0 ] && echo "ok: study_replay"
