@@ -48,12 +48,11 @@ make -C "$tmp/retro" -s -j2 build/bin/retro >"$tmp/build.log" 2>&1 || { tail -n 
 study=$tmp/retro/build/bin/retro
 make -s maps >/dev/null || die "make maps failed"
 
-cases="maps/alpine maps/islands maps/canyon"
+. scripts/bench-scenes.sh
+cases="alpine islands canyon"
 course=$shared/course
 if [ -d "$course" ]; then
-  cases="$cases $course/valley@-p:997.808716,559.177063:-z:230:-a:0"
-  cases="$cases $course/island@-p:147.436798,539.899414:-z:88:-a:0"
-  cases="$cases $course/pyramids@-p:110.388893,887.813843:-z:164:-a:0"
+  cases="$cases valley island pyramids"
 else
   echo "study-replay: $course absent: the course scenes are left out" >&2
 fi
@@ -79,13 +78,10 @@ timed() {
 for size in "640x480 800 100" "1920x1080 4000 30"; do
   set -- $size
   wh=$1 D=$2 frames=$3
-  for c in $cases; do
-    map=${c%%@*}
-    pose=$(printf '%s' "$c" | sed -n 's/^[^@]*@//p' | tr ':' ' ')
-    name=$(basename "$map")
+  for name in $cases; do
     echo "study-replay: $name at ${wh}, D $D: checking, then $rounds rounds" >&2
-    # shellcheck disable=SC2086
-    set -- "$map" $pose -s "$wh" -d "$D"
+    # shellcheck disable=SC2046
+    set -- $(bench_scene_args "$name" "$course") -s "$wh" -d "$D"
     frame "" "$@"
     frame probes "$@"
     frame stores "$@"

@@ -11,16 +11,7 @@ retro=$1
 course=${RETRO_SHARED:-../shared}/course
 doc=docs/SKIPPING.md
 
-# scene_args SCENE: the benchmark's map and pose of SCENE (bench/scenes.c)
-scene_args() {
-  case $1 in
-    alpine | islands | canyon) echo "maps/$1" ;;
-    valley) echo "$course/valley -p 997.808716,559.177063 -z 230 -a 0" ;;
-    island) echo "$course/island -p 147.436798,539.899414 -z 88 -a 0" ;;
-    pyramids) echo "$course/pyramids -p 110.388893,887.813843 -z 164 -a 0" ;;
-    *) return 1 ;;
-  esac
-}
+. scripts/bench-scenes.sh
 # rows HEADER: the rows of the table under that header line, separator left out
 rows() {
   awk -v h="$1" '$0 == h { on = 1; getline; next } on && /^\|/ { print; next } on { exit }' "$doc"
@@ -30,7 +21,7 @@ stats() {
   out=$tmp/$1-$2-$3.txt
   if [ ! -f "$out" ]; then
     # shellcheck disable=SC2046
-    "$retro" render $(scene_args "$1") -s "$2" -d "$3" --stats -o "$tmp/frame.ppm" >"$out" 2>"$tmp/err" ||
+    "$retro" render $(bench_scene_args "$1" "$course") -s "$2" -d "$3" --stats -o "$tmp/frame.ppm" >"$out" 2>"$tmp/err" ||
       { fail "$1 $2 D $3: --stats: $(tail -n 1 "$tmp/err")"; : >"$out"; }
   fi
   echo "$out"
@@ -61,10 +52,11 @@ each_row() {
         size=$(printf '%s' "${frame%%,*}" | sed 's/×/x/')
         dist=${frame##*D } ;;
     esac
-    scene_args "$scene" >/dev/null || { fail "$doc: unknown scene in row '$label'"; continue; }
-    case $scene in valley | island | pyramids)
-      [ -d "$course" ] || { case " $skipped " in *" $scene "*) ;; *) skipped="$skipped $scene" ;; esac; continue; } ;;
-    esac
+    bench_scene_args "$scene" "$course" >/dev/null || { fail "$doc: unknown scene in row '$label'"; continue; }
+    if bench_scene_course "$scene" && [ ! -d "$course" ]; then
+      case " $skipped " in *" $scene "*) ;; *) skipped="$skipped $scene" ;; esac
+      continue
+    fi
     [ -n "$size" ] && [ -n "$dist" ] || { fail "$doc: row '$label' has no frame above it"; continue; }
     # the cells after the label, without their % signs
     set -- $(printf '%s' "$line" | awk -F'|' '{ for (i = 3; i < NF; i++) { gsub(/[ %]/, "", $i); printf "%s ", $i } }')
