@@ -63,6 +63,20 @@ grep -q '^probes: [1-9][0-9]*, pyramid windows read: [1-9]' "$tmp/con.txt" || fa
 grep -q '^probes: 0, pyramid windows read: 0$' "$tmp/coff.txt" || fail "course --no-skip --stats counted probes"
 on=$(num evaluated "$tmp/con.txt"); off=$(num evaluated "$tmp/coff.txt")
 [ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "course evaluated: $on with skipping, $off without"
+# modes truth and fixed skip in the ybuffer strip with their own probe (skip_wide.h)
+for m in truth fixed; do
+  "$retro" render $map -m $m $args "$tmp/w.ppm" --stats >"$tmp/won.txt" || fail "render -m $m --stats"
+  "$retro" render $map -m $m --no-skip $args "$tmp/wn.ppm" --stats >"$tmp/woff.txt" || fail "$m --no-skip --stats"
+  "$retro" render $map -m $m -k naive $args "$tmp/wnaive.ppm" || fail "render -m $m naive"
+  cmp -s "$tmp/w.ppm" "$tmp/wnaive.ppm" || fail "mode $m: the skipping frame differs from naive"
+  cmp -s "$tmp/w.ppm" "$tmp/wn.ppm" || fail "mode $m: --no-skip changed the image"
+  grep -q 'skipping on$' "$tmp/won.txt" || fail "$m --stats: $(head -n 1 "$tmp/won.txt")"
+  grep -q '^probes: [1-9][0-9]*, pyramid windows read: [1-9]' "$tmp/won.txt" || fail "$m --stats: no probes counted"
+  grep -q '^probes: 0, pyramid windows read: 0$' "$tmp/woff.txt" || fail "$m --no-skip --stats counted probes"
+  [ "$(num painting "$tmp/won.txt")" = "$(num painting "$tmp/woff.txt")" ] || fail "$m: painting counts differ"
+  on=$(num evaluated "$tmp/won.txt"); off=$(num evaluated "$tmp/woff.txt")
+  [ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "$m evaluated: $on with skipping, $off without"
+done
 # no stats and no output file when the input is bad
 "$retro" render $map --stats -d 12x -o "$tmp/bad.ppm" >"$tmp/bad.txt" 2>/dev/null
 [ $? -eq 2 ] && [ ! -e "$tmp/bad.ppm" ] && [ ! -s "$tmp/bad.txt" ] || fail "bad input with --stats"

@@ -140,7 +140,8 @@ static void check_one(trio *g, const char *what, const retro_map *m, player_t p,
 /* Each case in mode exact, then in mode lod (the lod effect on the same effects) at a rate
  * taking the smallest steps allowed, the default's, or ones longer than the finest blocks,
  * in turn: mode lod's runs are of sample indices whose distances grow (hmax_pyramid.h); and
- * without effects in mode course (maps of S >= 2), whose torus is of side S - 1. */
+ * without effects in mode course (maps of S >= 2), whose torus is of side S - 1, and in modes
+ * truth and fixed (skip_wide.h), which have no effects. */
 void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int H, int D,
            const retro_effects *fx)
 {
@@ -149,6 +150,14 @@ void check(trio *g, const char *what, const retro_map *m, player_t p, int W, int
         char course[160];
         snprintf(course, sizeof course, "%s (mode course)", what);
         check_one(g, course, m, p, W, H, D, NULL, 0, RETRO_MODE_COURSE);
+    }
+    if (!fx) {
+        static const retro_mode wide[] = {RETRO_MODE_TRUTH, RETRO_MODE_FIXED};
+        for (int i = 0; i < 2; i++) {
+            char label[160];
+            snprintf(label, sizeof label, "%s (mode %s)", what, wide[i] == RETRO_MODE_TRUTH ? "truth" : "fixed");
+            check_one(g, label, m, p, W, H, D, NULL, 0, wide[i]);
+        }
     }
     static const float rates[] = {0.02f, 0.3f, 0.001f};
     const float rate = rates[g->frames % 3];

@@ -12,6 +12,7 @@
 #include "hmax_pyramid.h"
 #include "kernels.h"
 #include "retro_scene.h"
+#include "skip_wide.h"
 #include "test_util.h"
 
 static player_t at(float x, float y, int angle, int height)
@@ -115,6 +116,9 @@ Test(skipping, skipping_skips)
     counts_mode(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     /* mode course walks the torus of side S - 1 from its accumulated positions */
     counts_mode(RETRO_MODE_COURSE, "ridge (mode course)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
+    /* modes truth and fixed probe with their own positions and rows (skip_wide.h) */
+    counts_mode(RETRO_MODE_TRUTH, "ridge (mode truth)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
+    counts_mode(RETRO_MODE_FIXED, "ridge (mode fixed)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, 1);
     retro_map_free(&m);
 }
 
@@ -403,6 +407,64 @@ Test(skipping, probe_bound)
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld distances)", skipped);
+}
+
+/* The probe of modes truth and fixed on its own (skip_wide.h), as probe_bound checks mode
+ * exact's: every distance retro_skip_run_wide skips has a row at or below y, brute-forced from
+ * the sample's own cell and row in the mode's arithmetic, with run lengths up to 4 times too
+ * long, across spikes, the seam, odd sizes and D up to 6 S. */
+Test(skipping, probe_bound_wide)
+{
+    static const int sizes[] = {5, 6, 37, 64, 100, 129};
+    static const retro_mode modes[] = {RETRO_MODE_TRUTH, RETRO_MODE_FIXED};
+    uint64_t st = 123;
+    long skipped[2] = {0, 0};
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        const int S = sizes[si];
+        retro_map m;
+        spiky_map(&m, S, 53 + (uint64_t)S, &st);
+        uint32_t out[1];
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
+        for (int frame = 0; frame < 60; frame++) {
+            const int fixed = frame & 1;
+            retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+            o.mode = (int)modes[fixed];
+            const retro_frame *f = random_frame(rc, &o, &m, 6, out, &st);
+            const int W = f->W, H = f->H, D = f->D;
+            for (int q = 0; q < 40; q++) {
+                int u = (int)(rng_next(&st) % (unsigned)W), d = 1 + (int)(rng_next(&st) % (unsigned)(D - 1));
+                int yb = (int)(rng_next(&st) % (unsigned)H);
+                retro_skip_col col;
+                retro_skip_wide_init(&col, f, u);
+                col.level = RETRO_PYR_LMIN + (int)(rng_next(&st) % 4);
+                if (col.level > f->pyr->lmax)
+                    col.level = f->pyr->lmax;
+                if (q & 1)
+                    col.inv_r *= 1.0f + (float)(rng_next(&st) % 4);
+                const int e = fixed ? retro_skip_run_wide(f->pyr, f, &col, u, d, D, yb, 1)
+                                    : retro_skip_run_wide(f->pyr, f, &col, u, d, D, yb, 0);
+                cr_assert(e >= d && e <= D, "skip from %d returned %d (D %d)", d, e, D);
+                for (int dd = d; dd < e; dd++) {
+                    int v;
+                    if (fixed) {
+                        size_t idx = retro_fixed_sample(f, u, dd);
+                        v = retro_fixed_row(f->kd_q[dd], f->half_h_q, H, f->height_map[idx] - f->height);
+                    } else {
+                        size_t idx = retro_truth_sample(f, u, dd);
+                        v = retro_truth_row(f->kdd[dd], 0.5 * (double)H, H, f->height_map[idx] - f->height);
+                    }
+                    cr_assert_leq(v, yb, "mode %s, S %d: column %d skipped distance %d of [%d, %d) with row %d above %d",
+                                  fixed ? "fixed" : "truth", S, u, dd, d, e, v, yb);
+                }
+                skipped[fixed] += e - d;
+            }
+        }
+        retro_ctx_free(rc);
+        retro_map_free(&m);
+    }
+    cr_assert_gt(skipped[0], 1000, "mode truth: the probes skipped almost nothing (%ld distances)", skipped[0]);
+    cr_assert_gt(skipped[1], 1000, "mode fixed: the probes skipped almost nothing (%ld distances)", skipped[1]);
 }
 
 /* The ideal plane bound on its own (retro_skip_plane_hides): for random frames, columns, runs

@@ -301,11 +301,12 @@ retro_err retro_frame_setup(retro_ctx *rc, retro_mode mode, const player_t *p, c
     default: setup_exact(rc, f, p->angle, fx); break; /* exact and lod */
     }
 #ifndef RETRO_SUBMISSION
-    /* occlusion skipping (docs/SKIPPING.md), unless switched off: modes exact and lod on the
-     * S x S torus; mode course on its (S - 1) x (S - 1) torus when its positions' drift is
-     * small enough to bound (skip_course.h), for the ybuffer strip (the SIMD column does not
-     * skip) */
-    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) && !rc->no_skip &&
+    /* occlusion skipping (docs/SKIPPING.md), unless switched off: modes exact, lod, truth and
+     * fixed on the S x S torus; mode course on its (S - 1) x (S - 1) torus when its positions'
+     * drift is small enough to bound (skip_course.h), for the ybuffer strip (the SIMD column
+     * does not skip) */
+    if ((mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD || mode == RETRO_MODE_TRUTH || mode == RETRO_MODE_FIXED) &&
+        !rc->no_skip &&
         retro_pyramid_get(&rc->pyr, hm, S, S, &f->pyr))
         return RETRO_ENOMEM;
     if (mode == RETRO_MODE_COURSE && !rc->no_skip && (f->course_margin = retro_course_margin(p->x, p->y, W, D)) &&

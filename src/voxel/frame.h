@@ -34,7 +34,8 @@ struct retro_frame {
      * frame's mode and effects at the CPU's ISA level, chosen once by setup */
     void (*strip)(const struct retro_frame *f, float *qx, float *qy, int u0, int u1);
     /* the map's maximum-height pyramid when occlusion skipping is on (hmax_pyramid.h,
-     * docs/SKIPPING.md), else NULL: of period S in modes exact and lod, S - 1 in mode course */
+     * docs/SKIPPING.md), else NULL: of period S in modes exact, lod, truth and fixed, S - 1 in
+     * mode course */
     const struct retro_pyramid *pyr;
     struct { /* modes exact and lod (x0, y0 in every mode) */
         float cs, sn;      /* view direction, exact at multiples of 90 degrees */

@@ -25,9 +25,11 @@
  * Occlusion skipping (docs/SKIPPING.md): in modes exact and lod, with any per-sample effects, a
  * frame that has a pyramid (f->pyr) runs columns_skip() instead, where each column asks retro_skip_run
  * (src/voxel/hmax_pyramid.h, where the bound is proved) for the first distance that may still paint
- * before evaluating samples. Built with RETRO_COUNT_SAMPLES, the file counts samples evaluated
- * and painting into retro_ybuffer_counts, and per column into retro_ybuffer_columns when set
- * (ybuffer_columns.h; the library holds that build too, under other names).
+ * before evaluating samples; modes course, truth and fixed walk their columns the same way with
+ * probes of their own (skip_course.h, skip_wide.h). Built with RETRO_COUNT_SAMPLES, the file
+ * counts samples evaluated and painting into retro_ybuffer_counts, and per column into
+ * retro_ybuffer_columns when set (ybuffer_columns.h; the library holds that build too, under
+ * other names).
  */
 #include "kernels.h"
 #include "retro_internal.h"
@@ -35,6 +37,7 @@
 #ifndef RETRO_SUBMISSION
 #include "hmax_pyramid.h"
 #include "skip_course.h"
+#include "skip_wide.h"
 #endif
 
 #ifdef RETRO_COUNT_SAMPLES
@@ -339,6 +342,78 @@ static void columns_skip_course(const retro_frame *frame, float *qx, float *qy, 
         retro_course_advance(f, qx, qy, u, u + 1);
     }
 }
+
+/* Columns [c0, c1) of mode truth or fixed (kind) with skipping (skip_wide.h, where the bound is
+ * proved), each walked nearest first as columns_skip() walks mode exact's: a batch's cells and
+ * rows first (the mode's sample and row functions, as sample() calls them), so their integer
+ * divisions overlap, then the y-buffer pass over them nearest first. Each column paints the
+ * same samples in the same order as in chunk(), so the bytes are the same. On a power-of-two
+ * map (pow2) the cell is the mode's floor masked by S - 1: in two's complement that is the
+ * non-negative remainder floor mod S the mode's sample function takes with a division. */
+static inline __attribute__((always_inline)) void columns_skip_wide(const retro_frame *frame, int c0, int c1,
+                                                                    const int kind, const int pow2)
+{
+    const retro_frame copy = *frame, *f = &copy;
+    const int W = f->W, H = f->H, D = f->D, S = f->S;
+    const int *vcap = f->vcap;
+    uint32_t *out = f->out;
+    for (int u = c0; u < c1; u++) {
+        retro_skip_col col;
+        retro_skip_wide_init(&col, f, u);
+        int y = 0, d = 1, batch = RETRO_SKIP_NEAR;
+        while (d < D && y < vcap[d]) {
+            const int next = retro_skip_run_wide(f->pyr, f, &col, u, d, D, y, kind == KIND_FIXED);
+            if (next > d) {
+                d = next;
+                batch = RETRO_SKIP_NEAR;
+                continue;
+            }
+            const int cnt = D - d < batch ? D - d : batch;
+            batch = batch < RETRO_SKIP_FAR ? 2 * batch : batch;
+            size_t cell[RETRO_SKIP_FAR];
+            int rows[RETRO_SKIP_FAR];
+            for (int t = 0; t < cnt; t++) {
+                const int e = d + t;
+                COUNT_EVAL();
+                if (pow2) {
+                    int I, J;
+                    retro_skip_wide_floors(f, u, e, kind == KIND_FIXED, &I, &J);
+                    cell[t] = (size_t)(J & (S - 1)) * (size_t)S + (size_t)(I & (S - 1));
+                } else
+                    cell[t] = kind == KIND_FIXED ? retro_fixed_sample(f, u, e) : retro_truth_sample(f, u, e);
+                rows[t] = retro_skip_wide_row(f, e, f->height_map[cell[t]] - f->height, kind == KIND_FIXED);
+            }
+            for (int t = 0; t < cnt && y < H; t++) { /* a full column takes nothing more */
+                if (rows[t] > y) {
+                    COUNT_PAINT();
+                    y = span(out, W, H, u, y, rows[t], f->color_map[cell[t]]);
+                }
+            }
+            d += cnt;
+        }
+        span(out, W, H, u, y, H, f->sky);
+    }
+}
+
+static void skip_truth(const retro_frame *f, float *qx, float *qy, int c0, int c1)
+{
+    (void)qx;
+    (void)qy;
+    if (f->S & (f->S - 1))
+        columns_skip_wide(f, c0, c1, KIND_TRUTH, 0);
+    else
+        columns_skip_wide(f, c0, c1, KIND_TRUTH, 1);
+}
+
+static void skip_fixed(const retro_frame *f, float *qx, float *qy, int c0, int c1)
+{
+    (void)qx;
+    (void)qy;
+    if (f->S & (f->S - 1))
+        columns_skip_wide(f, c0, c1, KIND_FIXED, 0);
+    else
+        columns_skip_wide(f, c0, c1, KIND_FIXED, 1);
+}
 #endif
 
 typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
@@ -414,8 +489,13 @@ static chunk_fn chunk_for(const retro_frame *f)
             return columns_skip_course;
 #endif
         return course;
+#ifndef RETRO_SUBMISSION
+    case RETRO_MODE_TRUTH: return retro_skip_wide_applies(f) ? skip_truth : truth;
+    case RETRO_MODE_FIXED: return retro_skip_wide_applies(f) ? skip_fixed : fixed;
+#else
     case RETRO_MODE_TRUTH: return truth;
     case RETRO_MODE_FIXED: return fixed;
+#endif
     case RETRO_MODE_LOD: return lod_plain;
     default: return (f->S & (f->S - 1)) ? exact_any : exact_pow2;
     }

@@ -147,11 +147,16 @@ RETRO_HELPER int retro_course_cell_fast(float q, float k, float inv_k)
     return m >= 0 ? (int)m : 0;
 }
 
-/* floor(v / 2^bits) mod S without shifting a negative value (implementation-defined in C). */
+/* floor(v / 2^bits) without shifting a negative value (implementation-defined in C). */
+RETRO_HELPER int64_t retro_fixed_floor(int64_t v)
+{
+    return v >= 0 ? v >> RETRO_Q_POS : -((-(v + 1)) >> RETRO_Q_POS) - 1;
+}
+
+/* floor(v / 2^bits) mod S. */
 RETRO_HELPER int retro_fixed_cell(int64_t v, int S)
 {
-    int64_t q = v >= 0 ? v >> RETRO_Q_POS : -((-(v + 1)) >> RETRO_Q_POS) - 1;
-    int64_t i = q % S;
+    int64_t i = retro_fixed_floor(v) % S;
     return (int)(i < 0 ? i + S : i);
 }
 
