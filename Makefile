@@ -307,7 +307,8 @@ ACCURACY_ARGS ?=
 accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto chart
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 	$(Q)mkdir -p $(RESULTS)
-	$(Q)RETRO_SHARED=$(SHARED) $(RETRO) accuracy -o $(RESULTS)/ACCURACY.md \
+	$(Q)RETRO_SHARED=$(SHARED) RETRO_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null)" \
+	  $(RETRO) accuracy -o $(RESULTS)/ACCURACY.md \
 	  --chart $(RESULTS)/accuracy-pareto.svg $(ACCURACY_ARGS)
 
 # The only target that writes the committed results/: a full (not quick) run of make bench,

@@ -134,8 +134,12 @@ def since_block(md, repo):
     """Whether the kernels changed after the published run: the commits since the run's commit that
     touch src/ or include/, from git in repo. None when git cannot say (no repository, or the run's
     commit is not in it): the README's block is then left as it is and not checked."""
+    return since_commit(context_field(md, "commit"), repo)
+
+
+def since_commit(commit, repo):
+    """since_block's sentence for a run of commit (a hash; None when it is not one)."""
     import subprocess
-    commit = context_field(md, "commit")
     if not re.fullmatch(r"[0-9a-f]{7,40}", commit):
         return None
     try:
@@ -404,12 +408,14 @@ def accuracy_blocks(md):
     head, rows = t[key][0], t[key][1:]
     col = {name: i for i, name in enumerate(head)}
     v = {r[0]: r for r in rows}
-    m = re.search(r"Measured (\S+) by `make accuracy`: (\d+) seeded random poses", md)
+    m = re.search(r"Measured (.+?) by `make accuracy`: (\d+) seeded random poses", md)
     when, poses = (m.group(1), m.group(2)) if m else ("unknown", "?")
+    where = re.search(r"^Machine: (.+?)\. Commit: (.+?)\.$", md, re.M)
+    machine = f" on {where.group(1)}, commit `{where.group(2)}`" if where else ""
     out = {}
     out["accuracy:context"] = (
         f"`retro accuracy` rendered {poses} seeded random poses of the six scenes with each "
-        f"variant and compared each frame with mode `truth`, on {when} (one `make accuracy` run, "
+        f"variant and compared each frame with mode `truth`, on {when}{machine} (one `make accuracy` run, "
         "published by `make publish`; [`results/ACCURACY.md`](results/ACCURACY.md)). Definitions "
         "are in [`docs/ACCURACY.md`](docs/ACCURACY.md). Its times come from its own run, so "
         "compare them with each other, not with the benchmark's.")
@@ -510,7 +516,14 @@ def main(argv):
     columns = readme_skipping.skip_columns_block(results)
     if columns:
         blocks["bench:skip-columns"] = columns
-    blocks.update(accuracy_blocks(open(f"{results}/ACCURACY.md", encoding="utf-8").read()))
+    accuracy = open(f"{results}/ACCURACY.md", encoding="utf-8").read()
+    blocks.update(accuracy_blocks(accuracy))
+    run = re.search(r"^Machine: .+?\. Commit: ([0-9a-f]{7,40})(-dirty)?\.$", accuracy, re.M)
+    since = since_commit(run.group(1), os.path.dirname(os.path.abspath(path))) if run and not run.group(2) else None
+    if since is not None:
+        blocks["accuracy:since"] = since
+    else:
+        print("note: the accuracy run names no clean commit git knows: README's accuracy:since block is not checked")
     old = open(path, encoding="utf-8").read()
     new = replace(old, blocks)
     if check:

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "accuracy_metrics.h"
 
@@ -191,6 +192,42 @@ static void write_families(FILE *f, const acc_families *fam)
                 base(fam->pair), base(fam->pair), base(fam->pair));
 }
 
+/* The first value of /proc/cpuinfo's field `key` (e.g. "model name"), or "" where there is none. */
+static void cpuinfo_field(const char *key, char *out, size_t outlen)
+{
+    out[0] = 0;
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f)
+        return;
+    char line[512];
+    const size_t k = strlen(key);
+    while (fgets(line, sizeof line, f)) {
+        const char *colon = strchr(line, ':');
+        if (strncmp(line, key, k) || !colon || strspn(line + k, " \t") != (size_t)(colon - line - (ptrdiff_t)k))
+            continue;
+        snprintf(out, outlen, "%s", colon + 1 + strspn(colon + 1, " \t"));
+        out[strcspn(out, "\n")] = 0;
+        break;
+    }
+    fclose(f);
+}
+
+/* The machine the times were taken on, as the benchmark names it: the model name (virtual
+ * machines often hide the rest) with family and model, and the cores online. */
+static void machine_name(char *out, size_t outlen)
+{
+    char name[160], family[16], model[16];
+    cpuinfo_field("model name", name, sizeof name);
+    cpuinfo_field("cpu family", family, sizeof family);
+    cpuinfo_field("model", model, sizeof model);
+    const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    if (family[0])
+        snprintf(out, outlen, "%s (family %s, model %s), %ld cores", name[0] ? name : "unknown CPU", family, model,
+                 cores);
+    else
+        snprintf(out, outlen, "%s, %ld cores", name[0] ? name : "unknown CPU", cores);
+}
+
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
                      uint64_t seed, const acc_families *fam, char *err, size_t errlen)
 {
@@ -206,12 +243,16 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
         return -1;
     }
     time_t t = time(NULL);
-    char date[32];
-    strftime(date, sizeof date, "%Y-%m-%d", gmtime(&t));
-    fprintf(f, "# What accuracy costs\n\nMeasured %s by `make accuracy`: %d seeded random poses (seed %llu) of the "
+    char date[32], machine[256];
+    strftime(date, sizeof date, "%Y-%m-%d %H:%M", gmtime(&t));
+    machine_name(machine, sizeof machine);
+    /* make accuracy names the commit (git describe); a run outside it says it does not know */
+    const char *commit = getenv("RETRO_COMMIT");
+    fprintf(f, "# What accuracy costs\n\nMeasured %s UTC by `make accuracy`: %d seeded random poses (seed %llu) of the "
                "default and course scenes, 640x480, D 800, each variant rendered by the fastest kernel for "
-               "its mode and compared with mode `truth` (definitions: docs/ACCURACY.md).\n\n",
-            date, poses, (unsigned long long)seed);
+               "its mode and compared with mode `truth` (definitions: docs/ACCURACY.md).\n\n"
+               "Machine: %s. Commit: %s.\n\n",
+            date, poses, (unsigned long long)seed, machine, commit && commit[0] ? commit : "unknown (RETRO_COMMIT unset)");
     fprintf(f, "Times are medians over the poses: with the fastest kernel for the variant's mode (the "
                "SIMD kernels exist for modes exact and course only), and with `ybuffer`, one scalar kernel "
                "for every variant, which isolates what the arithmetic itself costs.\n\n");
