@@ -25,6 +25,19 @@ if python3 scripts/readme-figures.py --check "$tmp" README.md >/dev/null 2>&1; t
   echo "FAIL: a README figure differing from the run was not caught"
   exit 1
 fi
+# The accuracy run names its commit: a run of the first commit that has src/ (git knows it
+# where this is a clone) is followed by kernel commits, which the README's block must name.
+first=$(git log --reverse --format=%h -- src 2>/dev/null | head -n 1)
+if [ -n "$first" ] && grep -q '^Machine: .*\. Commit: [0-9a-f]*\.$' results/ACCURACY.md; then
+  mkdir -p "$tmp/acc"
+  cp results/BENCH.md results/bench.json "$tmp/acc/" 2>/dev/null
+  sed "s/^\(Machine: .*\. Commit: \)[0-9a-f]*\.$/\1$first./" results/ACCURACY.md >"$tmp/acc/ACCURACY.md"
+  out=$(python3 scripts/readme-figures.py --check "$tmp/acc" README.md 2>&1)
+  case $out in
+    *"+**The kernels changed after this run:**"*) ;;
+    *) echo "FAIL: an accuracy run older than the kernels was not caught: $out" | head -c 600; exit 1 ;;
+  esac
+fi
 
 # Issue 18's blocks, from a run that has them: the committed BENCH.md with a large-frame table
 # and the submission's spread added in retro-bench's format, and the per-column counts.
