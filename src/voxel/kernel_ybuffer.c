@@ -395,25 +395,18 @@ static inline __attribute__((always_inline)) void columns_skip_wide(const retro_
     }
 }
 
-static void skip_truth(const retro_frame *f, float *qx, float *qy, int c0, int c1)
-{
-    (void)qx;
-    (void)qy;
-    if (f->S & (f->S - 1))
-        columns_skip_wide(f, c0, c1, KIND_TRUTH, 0);
-    else
-        columns_skip_wide(f, c0, c1, KIND_TRUTH, 1);
-}
-
-static void skip_fixed(const retro_frame *f, float *qx, float *qy, int c0, int c1)
-{
-    (void)qx;
-    (void)qy;
-    if (f->S & (f->S - 1))
-        columns_skip_wide(f, c0, c1, KIND_FIXED, 0);
-    else
-        columns_skip_wide(f, c0, c1, KIND_FIXED, 1);
-}
+#define SKIP_WIDE_FN(name, kind)                                                                   \
+    static void name(const retro_frame *f, float *qx, float *qy, int c0, int c1)                   \
+    {                                                                                              \
+        (void)qx;                                                                                  \
+        (void)qy;                                                                                  \
+        if (f->S & (f->S - 1))                                                                     \
+            columns_skip_wide(f, c0, c1, kind, 0);                                                 \
+        else                                                                                       \
+            columns_skip_wide(f, c0, c1, kind, 1);                                                 \
+    }
+SKIP_WIDE_FN(skip_truth, KIND_TRUTH)
+SKIP_WIDE_FN(skip_fixed, KIND_FIXED)
 #endif
 
 typedef void (*chunk_fn)(const retro_frame *f, float *qx, float *qy, int c0, int c1);
