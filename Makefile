@@ -318,9 +318,12 @@ bench-csv: ## the last run's bench.json as CSV: RESULTS/bench.csv
 	$(Q)python3 scripts/bench-csv.py $(RESULTS)/bench.json >$(RESULTS)/bench.csv.tmp
 	$(Q)mv $(RESULTS)/bench.csv.tmp $(RESULTS)/bench.csv && echo "  wrote $(RESULTS)/bench.csv"
 
-.PHONY: publish
+.PHONY: publish publish-accuracy
 publish: ## copy the last full run from RESULTS into results/ and refresh the README's figures
 	$(Q)sh scripts/publish.sh $(RESULTS) results README.md
+
+publish-accuracy: ## copy the last make accuracy run alone from RESULTS into results/ and refresh the README
+	$(Q)sh scripts/publish.sh $(RESULTS) results README.md --accuracy
 
 submission: ## the single-file course render.c (results/submission/render.c), built and tested as the course does
 	$(Q)sh scripts/make-submission.sh results/submission/render.c

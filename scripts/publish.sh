@@ -3,11 +3,37 @@
 # demo pictures, if any) from the runs' folder into the committed results/, then rewrites the
 # README's figures from them. The only way results/ changes, so a quick or partial run never
 # replaces it.
-# usage: publish.sh RUNS RESULTS README
+# usage: publish.sh RUNS RESULTS README [--accuracy]
+# --accuracy (make publish-accuracy) copies the accuracy run alone, for a machine that gives a
+# steady make accuracy but no steady make bench: the benchmark's figures stay as they are.
 set -eu
 runs=$1
 dest=$2
 readme=$3
+if [ "${4:-}" = --accuracy ]; then
+  if [ ! -f "$runs/ACCURACY.md" ]; then
+    echo "error: no accuracy run in $runs (make accuracy first)" >&2
+    exit 2
+  fi
+  # a partial run (ACCURACY_ARGS=--poses N below the default 120) or one of edited sources
+  # never replaces the published one
+  poses=$(sed -n 's/^Measured .* by `make accuracy`: \([0-9]*\) seeded random poses.*/\1/p' "$runs/ACCURACY.md")
+  if [ "${poses:-0}" -lt 120 ]; then
+    echo "error: $runs/ACCURACY.md rendered ${poses:-no} poses: run make accuracy with the default 120 to publish" >&2
+    exit 2
+  fi
+  if ! grep -q '^Machine: .*\. Commit: [0-9a-f]*\.$' "$runs/ACCURACY.md"; then
+    echo "error: $runs/ACCURACY.md names no clean commit (edited sources?): commit, then make accuracy" >&2
+    exit 2
+  fi
+  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
+    accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
+    [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
+  done
+  python3 scripts/readme-figures.py "$dest" "$readme"
+  echo "  published; review with git diff, then commit $dest and $readme"
+  exit 0
+fi
 if [ ! -f "$runs/BENCH.md" ] || [ ! -f "$runs/bench.json" ]; then
   echo "error: no benchmark run in $runs (make bench first)" >&2
   exit 2

@@ -416,7 +416,7 @@ def accuracy_blocks(md):
     out["accuracy:context"] = (
         f"`retro accuracy` rendered {poses} seeded random poses of the six scenes with each "
         f"variant and compared each frame with mode `truth`, on {when}{machine} (one `make accuracy` run, "
-        "published by `make publish`; [`results/ACCURACY.md`](results/ACCURACY.md)). Definitions "
+        "published by `make publish` or `make publish-accuracy`; [`results/ACCURACY.md`](results/ACCURACY.md)). Definitions "
         "are in [`docs/ACCURACY.md`](docs/ACCURACY.md). Its times come from its own run, so "
         "compare them with each other, not with the benchmark's.")
     lines = ["| " + " | ".join(head) + " |", "|---|---|---|" + "---:|" * (len(head) - 3)]

@@ -47,6 +47,7 @@ mk demo || { echo "FAIL: make demo failed"; fail=1; }
 mk submission SHARED=/nonexistent || { echo "FAIL: make submission failed"; fail=1; }
 # A quick run must not be publishable.
 if mk publish >/dev/null; then echo "FAIL: make publish accepted a quick run"; fail=1; fi
+if mk publish-accuracy >/dev/null; then echo "FAIL: make publish-accuracy accepted a one-pose run"; fail=1; fi
 dirty=$(git status --porcelain --untracked-files=all)
 if [ -n "$dirty" ]; then
   echo "FAIL: the targets changed the tree:"
