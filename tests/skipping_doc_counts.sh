@@ -1,10 +1,10 @@
 #!/bin/sh
 # docs/SKIPPING.md's tables of counts ("How far a max bound can go": lanes walking alone; "Other
-# bounds at the same granularity") against `retro render --stats` of the same frames, rendered
-# here. Counts are exact and the same on any machine, so a change to the walk, the probe or the
-# counting that moves one fails this test until the table is written again from --stats. Rows of
-# the course's scenes are skipped, with a message, where ../shared/course is absent, and the
-# simd-avx512 columns where this CPU does not run AVX-512.
+# bounds at the same granularity"; "Modes truth and fixed") against `retro render --stats` of the
+# same frames, rendered here. Counts are exact and the same on any machine, so a change to the
+# walk, the probe or the counting that moves one fails this test until the table is written again
+# from --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
+# absent, and the simd-avx512 columns where this CPU does not run AVX-512.
 set -u
 retro=$1
 . tests/lib/cli_test.sh
@@ -16,13 +16,15 @@ doc=docs/SKIPPING.md
 rows() {
   awk -v h="$1" '$0 == h { on = 1; getline; next } on && /^\|/ { print; next } on { exit }' "$doc"
 }
-# stats SCENE SIZE D: the path of that frame's --stats output, rendered once
+# stats SCENE SIZE D [MODE]: the path of that frame's --stats output (mode exact by default),
+# rendered once
 stats() {
-  out=$tmp/$1-$2-$3.txt
+  mode=${4:-exact}
+  out=$tmp/$1-$2-$3-$mode.txt
   if [ ! -f "$out" ]; then
     # shellcheck disable=SC2046
-    "$retro" render $(bench_scene_args "$1" "$course") -s "$2" -d "$3" --stats -o "$tmp/frame.ppm" >"$out" 2>"$tmp/err" ||
-      { fail "$1 $2 D $3: --stats: $(tail -n 1 "$tmp/err")"; : >"$out"; }
+    "$retro" render $(bench_scene_args "$1" "$course") -m "$mode" -s "$2" -d "$3" --stats -o "$tmp/frame.ppm" \
+      >"$out" 2>"$tmp/err" || { fail "$1 $2 D $3 mode $mode: --stats: $(tail -n 1 "$tmp/err")"; : >"$out"; }
   fi
   echo "$out"
 }
@@ -90,6 +92,18 @@ row_check() {
     check "$label, alone / simd-avx512" "$4" "$(awk -v a="$alone" -v s="$simd" 'BEGIN { printf "%.2f", a / s }')"
 }
 each_row '| scene | column walk | lanes walking alone | `simd-avx512` | alone / `simd-avx512` |'
+
+# "Modes truth and fixed": the ybuffer walk's share in each mode
+row_check() {
+  n=1
+  for mode in exact truth fixed; do
+    eval "want=\${$n}"
+    check "$label, mode $mode" "$want" \
+      "$(pick 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$(stats "$scene" "$size" "$dist" "$mode")")"
+    n=$((n + 1))
+  done
+}
+each_row '| scene | exact | truth | fixed |'
 
 [ -z "$skipped" ] || echo "skip: $course absent: rows of$skipped not checked"
 [ "$checked" -gt 0 ] || fail "no row of $doc's count tables was checked"
