@@ -10,6 +10,13 @@ set -eu
 runs=$1
 dest=$2
 readme=$3
+# the files of a make accuracy run, copied by both kinds of publishing
+copy_accuracy() {
+  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
+    accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
+    [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
+  done
+}
 if [ "${4:-}" = --accuracy ]; then
   if [ ! -f "$runs/ACCURACY.md" ]; then
     echo "error: no accuracy run in $runs (make accuracy first)" >&2
@@ -26,10 +33,7 @@ if [ "${4:-}" = --accuracy ]; then
     echo "error: $runs/ACCURACY.md names no clean commit (edited sources?): commit, then make accuracy" >&2
     exit 2
   fi
-  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
-    accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
-    [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
-  done
+  copy_accuracy
   python3 scripts/readme-figures.py "$dest" "$readme"
   echo "  published; review with git diff, then commit $dest and $readme"
   exit 0
@@ -57,10 +61,7 @@ for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distan
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
 if [ -f "$runs/ACCURACY.md" ]; then
-  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
-    accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
-    [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
-  done
+  copy_accuracy
 fi
 for f in alpine islands canyon tide alpine-plain islands-plain canyon-plain; do
   [ -f "$runs/$f.png" ] && cp "$runs/$f.png" "$dest/$f.png" && echo "  COPY    $dest/$f.png"

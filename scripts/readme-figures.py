@@ -400,6 +400,12 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
     return "\n".join(lines)
 
 
+def accuracy_run(md):
+    """The machine and commit an accuracy run names ("Machine: M. Commit: C."), or None."""
+    m = re.search(r"^Machine: (.+?)\. Commit: (.+?)\.$", md, re.M)
+    return (m.group(1), m.group(2)) if m else None
+
+
 def accuracy_blocks(md):
     t = tables(md)
     key = next(iter(t), None)
@@ -410,8 +416,8 @@ def accuracy_blocks(md):
     v = {r[0]: r for r in rows}
     m = re.search(r"Measured (.+?) by `make accuracy`: (\d+) seeded random poses", md)
     when, poses = (m.group(1), m.group(2)) if m else ("unknown", "?")
-    where = re.search(r"^Machine: (.+?)\. Commit: (.+?)\.$", md, re.M)
-    machine = f" on {where.group(1)}, commit `{where.group(2)}`" if where else ""
+    where = accuracy_run(md)
+    machine = f" on {where[0]}, commit `{where[1]}`" if where else ""
     out = {}
     out["accuracy:context"] = (
         f"`retro accuracy` rendered {poses} seeded random poses of the six scenes with each "
@@ -518,8 +524,9 @@ def main(argv):
         blocks["bench:skip-columns"] = columns
     accuracy = open(f"{results}/ACCURACY.md", encoding="utf-8").read()
     blocks.update(accuracy_blocks(accuracy))
-    run = re.search(r"^Machine: .+?\. Commit: ([0-9a-f]{7,40})(-dirty)?\.$", accuracy, re.M)
-    since = since_commit(run.group(1), os.path.dirname(os.path.abspath(path))) if run and not run.group(2) else None
+    run = accuracy_run(accuracy)
+    # a run of edited sources ("-dirty") has no commit to count from; since_commit refuses it
+    since = since_commit(run[1], os.path.dirname(os.path.abspath(path))) if run else None
     if since is not None:
         blocks["accuracy:since"] = since
     else:
