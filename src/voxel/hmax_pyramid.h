@@ -250,7 +250,8 @@ RETRO_HELPER int retro_skip_oracle_hides(const retro_frame *f, float rx, float r
  *    monotone (non-decreasing for rx >= 0, non-increasing otherwise) and so is x0 + that.
  *    These are the kernel's very operations (-ffp-contract=off everywhere), so qx(e) lies
  *    between the values computed here at d and d1, and floor(qx(e)) between I0 and I1,
- *    computed as the kernel computes them (retro_floor; |q| < 2^31 for valid frames). y alike.
+ *    computed as the kernel computes them (retro_floor, or retro_floor_nn, which returns the
+ *    same integer; |q| < 2^31 for valid frames). y alike.
  * 2. Cells. The kernel's cell is (floor(qx) mod S, floor(qy) mod S), the same integer
  *    remainder in the power-of-two path. The box [min I, max I] x [min J, max J] is confirmed
  *    here to span at most B per axis (the run length is only an estimate, so rounding at block
@@ -308,13 +309,13 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
         const int d = dist ? dist[n] : n, d1 = dist ? dist[n1] : n1;
         if (at != n) { /* a finer level starts where the coarser one did */
             const float f0 = (float)d;
-            I0 = retro_floor(bilinear ? x0 + f0 * rx - 0.5f : x0 + f0 * rx);
-            J0 = retro_floor(bilinear ? y0 + f0 * ry - 0.5f : y0 + f0 * ry);
+            I0 = retro_floor_nn(bilinear ? x0 + f0 * rx - 0.5f : x0 + f0 * rx);
+            J0 = retro_floor_nn(bilinear ? y0 + f0 * ry - 0.5f : y0 + f0 * ry);
             at = n;
         }
         const float f1 = (float)d1;
-        const int I1 = retro_floor(bilinear ? x0 + f1 * rx - 0.5f : x0 + f1 * rx);
-        const int J1 = retro_floor(bilinear ? y0 + f1 * ry - 0.5f : y0 + f1 * ry);
+        const int I1 = retro_floor_nn(bilinear ? x0 + f1 * rx - 0.5f : x0 + f1 * rx);
+        const int J1 = retro_floor_nn(bilinear ? y0 + f1 * ry - 0.5f : y0 + f1 * ry);
         const int Imin = I0 < I1 ? I0 : I1, Jmin = J0 < J1 ? J0 : J1;
         /* bilinear reads the cells floor(q - 1/2) and one more on each axis */
         const int wi = (I0 < I1 ? I1 - I0 : I0 - I1) + bilinear, wj = (J0 < J1 ? J1 - J0 : J0 - J1) + bilinear;

@@ -224,6 +224,43 @@ static inline __attribute__((always_inline)) void chunk(const retro_frame *frame
 
 
 #ifndef RETRO_SUBMISSION
+/* Whether every position of the samples at distances d0..d1 is non-negative: positions are
+ * monotone in the distance (hmax_pyramid.h, retro_skip_run, point 1), so their smallest is at an
+ * end. Their floors are then the truncating conversions alone, and the cells their remainders
+ * without the sign's correction: the same integers as retro_floor and retro_cell give, at less
+ * cost than their conversion back and compare (docs/SKIPPING.md, "The traversal"). chunk() keeps
+ * retro_floor: its distance-outer order measured no faster with a cheaper floor. */
+static inline int batch_nonneg(float x0, float y0, float rx, float ry, int d0, int d1)
+{
+    const float f0 = (float)d0, f1 = (float)d1;
+    return x0 + f0 * rx >= 0.0f && x0 + f1 * rx >= 0.0f && y0 + f0 * ry >= 0.0f && y0 + f1 * ry >= 0.0f;
+}
+
+/* A batch's cells and rows (columns_skip): cnt samples from index n, their cells in cell[] and
+ * their rows' floats in vfs[]. nonneg: batch_nonneg holds, so (int)q is floor(q). */
+static inline __attribute__((always_inline)) void batch_cells(const retro_frame *f, const int kind, const int nonneg,
+                                                              float x0, float y0, float rx, float ry, const int *dist,
+                                                              int n, int cnt, int64_t height, float half_h,
+                                                              uint32_t *cell, float *vfs)
+{
+    const int S = f->S;
+    const uint8_t *hm = f->height_map;
+    for (int t = 0; t < cnt; t++) {
+        const int d = dist ? dist[n + t] : n + t;
+        const float fd = (float)d, qx = x0 + fd * rx, qy = y0 + fd * ry;
+        uint32_t idx;
+        if (kind == KIND_EXACT_POW2) {
+            const int I = nonneg ? (int)qx : retro_floor(qx), J = nonneg ? (int)qy : retro_floor(qy);
+            idx = (uint32_t)(J & (S - 1)) * (uint32_t)S + (uint32_t)(I & (S - 1));
+        } else if (nonneg)
+            idx = (uint32_t)((int)qy % S) * (uint32_t)S + (uint32_t)((int)qx % S);
+        else
+            idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
+        cell[t] = idx;
+        vfs[t] = f->kd[d] * (float)(hm[idx] - height) + half_h;
+    }
+}
+
 /* Columns [c0, c1) of mode exact or lod with skipping, each walked nearest first: the pyramid
  * is probed (retro_skip_run) at every sample the walk reaches, and where it cannot skip the
  * next RETRO_SKIP_NEAR samples are evaluated in two passes, their cells and vf first (sample()'s
@@ -237,12 +274,11 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
                                                                const int kind, const int fog, const int bilinear)
 {
     const retro_frame copy = *frame, *f = &copy;
-    const int W = f->W, H = f->H, S = f->S;
+    const int W = f->W, H = f->H;
     const int *vcap = f->vcap, *dist = kind == KIND_LOD ? f->dist : NULL;
     const int n_end = kind == KIND_LOD ? f->ndist : f->D;
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
     const int64_t height = f->height;
-    const uint8_t *hm = f->height_map;
     uint32_t *out = f->out;
     for (int u = c0; u < c1; u++) {
         retro_skip_col col;
@@ -275,18 +311,12 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
             }
             uint32_t cell[RETRO_SKIP_FAR];
             float vfs[RETRO_SKIP_FAR];
-            for (int t = 0; t < cnt; t++) {
-                const int d = dist ? dist[n + t] : n + t;
-                const float fd = (float)d, qx = x0 + fd * rx, qy = y0 + fd * ry;
-                uint32_t idx;
-                if (kind == KIND_EXACT_POW2)
-                    idx = (uint32_t)(retro_floor(qy) & (S - 1)) * (uint32_t)S + (uint32_t)(retro_floor(qx) & (S - 1));
-                else
-                    idx = (uint32_t)retro_cell(qy, S) * (uint32_t)S + (uint32_t)retro_cell(qx, S);
+            if (batch_nonneg(x0, y0, rx, ry, dist ? dist[n] : n, dist ? dist[n + cnt - 1] : n + cnt - 1))
+                batch_cells(f, kind, 1, x0, y0, rx, ry, dist, n, cnt, height, half_h, cell, vfs);
+            else
+                batch_cells(f, kind, 0, x0, y0, rx, ry, dist, n, cnt, height, half_h, cell, vfs);
+            for (int t = 0; t < cnt; t++)
                 COUNT_EVAL();
-                cell[t] = idx;
-                vfs[t] = f->kd[d] * (float)(hm[idx] - height) + half_h;
-            }
             for (int t = 0; t < cnt && y < H; t++) { /* a full column takes nothing more */
                 if (!(vfs[t] >= (float)(y + 1)))
                     continue;

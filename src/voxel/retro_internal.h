@@ -86,6 +86,14 @@ RETRO_HELPER int retro_floor(float q)
     return i - (q < (float)i);
 }
 
+/* retro_floor(q) for |q| < 2^31, branching on the sign: for q >= 0 (-0 included) truncation is
+ * the floor, which saves the conversion back and its compare where the sign is predictable
+ * (a column's positions change sign at most once along its ray). */
+RETRO_HELPER int retro_floor_nn(float q)
+{
+    return q >= 0.0f ? (int)q : retro_floor(q);
+}
+
 /* floor(q) mod S in [0, S). */
 RETRO_HELPER int retro_cell(float q, int S)
 {
