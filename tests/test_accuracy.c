@@ -1,6 +1,7 @@
 /* The accuracy variants (docs/ACCURACY.md): properties that hold exactly, and error bounds
  * loose enough to hold for any pose yet tight enough to catch a misplaced cell or shift. */
 #include <criterion/criterion.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -80,6 +81,18 @@ Test(accuracy, fixed_cell_floors_negative_positions)
     cr_assert_eq(retro_fixed_cell_test(-(1LL << 24) - 1, 7), 5);      /* just below -1 */
     cr_assert_eq(retro_fixed_cell_test((7LL << 24) + 5, 7), 0);       /* S wraps to 0 */
     cr_assert_eq(retro_fixed_cell_test((3LL << 24) - 1, 7), 2);
+}
+
+/* Mode truth's floor (retro_floor_d) against libm's floor on both sides of 0 and of the
+ * integers, -0 and the largest doubles below an integer included: truncation is the floor
+ * only from 0 up. */
+Test(accuracy, truth_floor_is_floor)
+{
+    const double q[] = {0.0, -0.0, 0.25, 0.999999999, 1.0, 1.5, -0x1p-1074, -0.25, -1.0, -1.5, -2.0,
+                        nextafter(-1.0, 0.0), nextafter(-1.0, -2.0), nextafter(3.0, 0.0), 4194303.75,
+                        -4194303.75, 0x1p52 + 1.0, -0x1p52 - 1.0};
+    for (size_t i = 0; i < sizeof q / sizeof q[0]; i++)
+        cr_assert_eq(retro_floor_d(q[i]), (int64_t)floor(q[i]), "q = %a", q[i]);
 }
 
 Test(accuracy, mode_names_round_trip)

@@ -94,6 +94,22 @@ static long cell_gap(long a, long b, int S)
 /* Every binary32 sample position stays within the bound of the truth, on poses from tiny to
  * the largest map and distance; while the bound is below one cell the cell is off by at most
  * one. This is the derivation of docs/NUMERICS.md, checked. */
+/* The skip walk's floors (retro_floor_nn, and truncation where a batch's positions are
+ * non-negative) against retro_floor and floorf on both sides of 0 and of the integers, -0, the
+ * least subnormal and the floats nearest an integer included. */
+Test(numerics, floor_by_sign_is_floor)
+{
+    const float q[] = {0.0f, -0.0f, 0x1p-149f, -0x1p-149f, 0.5f, -0.5f, 1.0f, -1.0f, nextafterf(1.0f, 0.0f),
+                       nextafterf(-1.0f, 0.0f), nextafterf(-1.0f, -2.0f), 4194303.5f, -4194303.5f,
+                       0x1p24f, -0x1p24f, 0x1p30f, -0x1p30f};
+    for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
+        cr_assert_eq(retro_floor_nn(q[i]), (int)floorf(q[i]), "q = %a", (double)q[i]);
+        cr_assert_eq(retro_floor(q[i]), (int)floorf(q[i]), "q = %a", (double)q[i]);
+        if (q[i] >= 0.0f)
+            cr_assert_eq((int)q[i], (int)floorf(q[i]), "q = %a", (double)q[i]);
+    }
+}
+
 Test(numerics, error_within_bound)
 {
     static const int sizes[] = {1, 3, 64, 1000, 1024, 16384};

@@ -175,10 +175,17 @@ RETRO_HELPER size_t retro_exact_sample(const retro_frame *f, int u, int d)
     return (size_t)retro_cell(qy, f->S) * (size_t)f->S + (size_t)retro_cell(qx, f->S);
 }
 
+/* floor(q) as an int64_t for |q| < 2^63: truncation for q >= 0 (-0 included), floor() below,
+ * so only negative positions pay libm's call on an ISA without a rounding instruction. */
+RETRO_HELPER int64_t retro_floor_d(double q)
+{
+    return q >= 0.0 ? (int64_t)q : (int64_t)floor(q);
+}
+
 RETRO_HELPER size_t retro_truth_sample(const retro_frame *f, int u, int d)
 {
     double qx = f->x0_d + (double)d * f->rxd[u], qy = f->y0_d + (double)d * f->ryd[u];
-    int64_t i = (int64_t)floor(qx) % f->S, j = (int64_t)floor(qy) % f->S;
+    int64_t i = retro_floor_d(qx) % f->S, j = retro_floor_d(qy) % f->S;
     i += i < 0 ? f->S : 0;
     j += j < 0 ? f->S : 0;
     return (size_t)j * (size_t)f->S + (size_t)i;

@@ -41,7 +41,7 @@ RETRO_HELPER int retro_skip_wide_applies(const retro_frame *f)
 /* retro_truth_sample's unwrapped floor of a position, in range (point 1). */
 RETRO_HELPER int retro_truth_floor(double q)
 {
-    return (int)(int64_t)floor(q);
+    return (int)retro_floor_d(q);
 }
 
 /* The unwrapped cell floors of column u's sample at distance e, as the mode's sample computes
