@@ -35,6 +35,10 @@ grep -q '^ideal oracle bound evaluates: [0-9.]*% with blocks down to 4 cells, [0
     "$tmp/on.txt" || fail "--stats: no oracle line"
 oracle=$(sed -n 's/^ideal oracle bound evaluates: \([0-9.]*\)%.*/\1/p' "$tmp/on.txt")
 awk -v o="$oracle" -v a="$ideal" 'BEGIN { exit !(o > 0 && o <= a) }' || fail "oracle share '$oracle', max '$ideal'"
+# the walk given one part of the ideal walk at a time ("Window or schedule"): with skipping only
+pat="^the column walk evaluates, with the run's own box: [0-9.]*% ([0-9]* windows), one probe per sample: [0-9.]*% ([0-9]* windows), unaligned windows: [0-9.]*% ([0-9]* windows), unaligned windows and one probe per sample: [0-9.]*% ([0-9]* windows)\$"
+grep -q "$pat" "$tmp/on.txt" || fail "--stats: no column walk parts line"
+! grep -q '^the column walk' "$tmp/off.txt" || fail "--no-skip --stats printed the column walk's parts"
 # lanes walking alone (docs/SKIPPING.md, "How far a max bound can go"): 16 x each group's busiest
 # column of the walk --columns writes, as a share of the frame's samples, and never below the
 # column walk's own share (a group's busiest column evaluates at least its mean)

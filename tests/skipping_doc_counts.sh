@@ -1,9 +1,9 @@
 #!/bin/sh
 # docs/SKIPPING.md's tables of counts ("How far a max bound can go": lanes walking alone; "Other
-# bounds at the same granularity"; "Modes truth and fixed") against `retro render --stats` of the
-# same frames, rendered here. Counts are exact and the same on any machine, so a change to the
-# walk, the probe or the counting that moves one fails this test until the table is written again
-# from --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
+# bounds at the same granularity"; "Window or schedule"; "Modes truth and fixed") against
+# `retro render --stats` of the same frames, rendered here. Counts are exact and the same on any
+# machine, so a change to the walk, the probe or the counting that moves one fails this test
+# until the table is written again from --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
 # absent, and the simd-avx512 columns where this CPU does not run AVX-512.
 set -u
 retro=$1
@@ -92,6 +92,42 @@ row_check() {
     check "$label, alone / simd-avx512" "$4" "$(awk -v a="$alone" -v s="$simd" 'BEGIN { printf "%.2f", a / s }')"
 }
 each_row '| scene | column walk | lanes walking alone | `simd-avx512` | alone / `simd-avx512` |'
+
+# "Window or schedule": the column walk with one part of the ideal walk at a time
+# part NAME [windows]: that part's share in the column walk line, or the windows it read
+part() {
+  pick 's/^the column walk evaluates, with //p' "$s" |
+    awk -v n="$1: " -v k="${2:-share}" 'BEGIN { RS = ", " } index($0, n) == 1 {
+      v = substr($0, length(n) + 1)
+      if (k == "share") { sub(/%.*/, "", v) } else { sub(/^[^(]*\(/, "", v); sub(/ windows\).*/, "", v) }
+      print v }'
+}
+row_check() {
+  check "$label, the walk" "$1" "$(pick 's/^evaluated: [0-9]* (\([0-9.]*\)%)$/\1/p' "$s")"
+  check "$label, own box" "$2" "$(part "the run's own box")"
+  check "$label, one probe per sample" "$3" "$(part "one probe per sample")"
+  check "$label, ideal max" "$4" "$(pick 's/^ideal max bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, unaligned windows" "$5" "$(part "unaligned windows")"
+  check "$label, unaligned, one probe per sample" "$6" "$(part "unaligned windows and one probe per sample")"
+}
+each_row '| scene | the walk | own box | one probe per sample | both: ideal max | unaligned windows | unaligned, one probe per sample |'
+
+# the same walks' samples and windows over the walk's own
+row_check() {
+  all=$(pick 's/^samples: \([0-9]*\) .*/\1/p' "$s")
+  ev=$(pick 's/^evaluated: \([0-9]*\) .*/\1/p' "$s")
+  win=$(pick 's/^probes: [0-9]*, pyramid windows read: \([0-9]*\)$/\1/p' "$s")
+  check "$label, windows the walk reads" "$1" "$win"
+  shift
+  for name in "the run's own box" "one probe per sample" "unaligned windows" \
+    "unaligned windows and one probe per sample"; do
+    got=$(awk -v a="$all" -v e="$ev" -v w="$win" -v p="$(part "$name")" -v pw="$(part "$name" windows)" \
+      'BEGIN { if (p == "" || pw == "" || e + w == 0) exit; printf "%.2f", (p / 100 * a + pw) / (e + w) }')
+    check "$label, $name: samples and windows over the walk's" "$1" "$got"
+    shift
+  done
+}
+each_row '| scene | windows the walk reads | own box | one probe per sample | unaligned windows | unaligned, one probe per sample |'
 
 # "Modes truth and fixed": the ybuffer walk's share in each mode
 row_check() {

@@ -269,6 +269,73 @@ Test(skipping, ideal_bound)
     }
 }
 
+/* The walk given one part of the ideal walk at a time (hmax_pyramid.h, retro_skip_window and
+ * retro_skip_every; docs/SKIPPING.md, "Window or schedule"): still exact (the frame and the
+ * painting samples are those without skipping), and both parts together evaluate the very
+ * samples the ideal max bound at the pyramid's finest blocks does, which --stats and the doc's
+ * table take for granted. */
+static void walk_parts_case(retro_mode mode, const char *what, const retro_map *m, player_t p, int W, int H, int D,
+                            const retro_effects *fx)
+{
+    retro_ctx *rc = retro_ctx_new(), *off = retro_ctx_new();
+    cr_assert(rc && off);
+    size_t n = (size_t)W * (size_t)H;
+    uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+    cr_assert(a && b);
+    retro_sample_counts t = count_fx(off, mode, 1, m, p, W, H, D, b, fx);
+    static const char *const windows[] = {"level windows", "own boxes", "unaligned windows"};
+    for (int w = RETRO_WINDOW_BLOCKS; w <= RETRO_WINDOW_UNALIGNED; w++)
+        for (int every = 0; every <= 1; every++) {
+            retro_skip_window = w;
+            retro_skip_every = every;
+            retro_sample_counts s = count_fx(rc, mode, 0, m, p, W, H, D, a, fx);
+            retro_skip_window = RETRO_WINDOW_BLOCKS;
+            retro_skip_every = 0;
+            cr_assert_eq(memcmp(a, b, n * sizeof *a), 0, "%s: the walk's frame with %s%s differs", what,
+                         windows[w], every ? ", one probe per sample" : "");
+            cr_assert_eq(s.painting, t.painting, "%s, %s%s: %llu samples paint, %llu without skipping", what,
+                         windows[w], every ? ", one probe per sample" : "", (unsigned long long)s.painting,
+                         (unsigned long long)t.painting);
+            if (w == RETRO_WINDOW_OWN_BOX && every) {
+                retro_skip_ideal = RETRO_PYR_LMIN;
+                retro_sample_counts i = count_fx(rc, mode, 0, m, p, W, H, D, a, fx);
+                retro_skip_ideal = -1;
+                cr_assert_eq(s.evaluated, i.evaluated,
+                             "%s: own boxes with one probe per sample evaluate %llu samples, the ideal bound %llu",
+                             what, (unsigned long long)s.evaluated, (unsigned long long)i.evaluated);
+            }
+        }
+    free(a);
+    free(b);
+    retro_ctx_free(rc);
+    retro_ctx_free(off);
+}
+
+Test(skipping, walk_parts)
+{
+    retro_effects bilinear;
+    memset(&bilinear, 0, sizeof bilinear);
+    bilinear.flags = RETRO_FX_BILINEAR;
+    retro_map m;
+    ridge_map(&m);
+    walk_parts_case(RETRO_MODE_EXACT, "ridge", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, NULL);
+    walk_parts_case(RETRO_MODE_LOD, "ridge (mode lod)", &m, at(128.5f, 128.5f, 0, 100), 64, 64, 400, NULL);
+    retro_map_free(&m);
+    static const char *const styles[] = {"alpine", "islands", "canyon"};
+    for (size_t k = 0; k < 3; k++) {
+        char err[256];
+        cr_assert_eq(retro_mapgen(styles[k], 3, 256, &m, err, sizeof err), 0, "%s", err);
+        struct retro_view v;
+        retro_default_view(&m, &v);
+        walk_parts_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle, v.height), 160, 120, 300, NULL);
+        /* D beyond S: runs cross the wrap seam; and bilinear, whose boxes are a cell wider */
+        walk_parts_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle + 37, v.height), 96, 72, 700, NULL);
+        walk_parts_case(RETRO_MODE_EXACT, styles[k], &m, at(v.x, v.y, v.angle + 37, v.height), 96, 72, 700,
+                        &bilinear);
+        retro_map_free(&m);
+    }
+}
+
 /* Square pyramids of side 64 on flat ground, each face a plane of slope 3: the terrain where a
  * plane bounds a box of cells more tightly than its maximum. */
 static void pyramid_map(retro_map *m, int S)

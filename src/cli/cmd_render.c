@@ -48,7 +48,9 @@ static void help(void)
            "  --stats     voxel: also print the samples the ybuffer kernel evaluates and those that\n"
            "              paint, and their share of the frame's samples (W x (D-1)), what\n"
            "              ideal max and plane bounds and an oracle would evaluate\n"
-           "              (docs/SKIPPING.md), what 16-lane groups whose lanes each walked\n"
+           "              (docs/SKIPPING.md), what the ybuffer walk evaluates given\n"
+           "              the ideal's boxes, its probe schedule, or unaligned windows,\n"
+           "              what 16-lane groups whose lanes each walked\n"
            "              as the ybuffer column does would, and simd-avx512's where it\n"
            "              runs; mesh: the triangles submitted, after culling, after\n"
            "              clipping, and the fragments\n"
@@ -134,6 +136,35 @@ static int print_lanes_alone(render_job *j, const player_t *p, double all)
     return 0;
 }
 
+/* The counting ybuffer's own walk given one part of the ideal walk at a time (docs/SKIPPING.md,
+ * "Window or schedule"): its share of all (W x (D-1)) evaluated with each. Returns 0 or
+ * CLI_EBADINPUT. */
+static int print_walk_parts(render_job *j, const retro_kernel *counted, const player_t *p, double all)
+{
+    static const struct {
+        int window, every;
+        const char *name;
+    } part[] = {{RETRO_WINDOW_OWN_BOX, 0, "the run's own box"},
+                {RETRO_WINDOW_BLOCKS, 1, "one probe per sample"},
+                {RETRO_WINDOW_UNALIGNED, 0, "unaligned windows"},
+                {RETRO_WINDOW_UNALIGNED, 1, "unaligned windows and one probe per sample"}};
+    printf("the column walk evaluates, with");
+    for (size_t i = 0; i < sizeof part / sizeof part[0]; i++) {
+        memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
+        retro_skip_window = part[i].window;
+        retro_skip_every = part[i].every;
+        retro_err e = retro_render(j->rc, counted, &j->opts, p, &j->c);
+        retro_skip_window = RETRO_WINDOW_BLOCKS;
+        retro_skip_every = 0;
+        if (e)
+            return cli_error("render", "%s", retro_strerror(e));
+        printf("%s %s: %.2f%% (%" PRIu64 " windows)", i ? "," : "", part[i].name,
+               all > 0 ? 100.0 * (double)retro_ybuffer_counts.evaluated / all : 0.0, retro_ybuffer_counts.windows);
+    }
+    printf("\n");
+    return 0;
+}
+
 /* The frame rendered again by the counting build of ybuffer (the same bytes, into the same
  * buffer), and its counts. Returns 0 or CLI_EBADINPUT. */
 static int print_stats(render_job *j, const player_t *p)
@@ -178,6 +209,8 @@ static int print_stats(render_job *j, const player_t *p)
         }
         printf("\n");
     }
+    if (retro_skip_applies(f) && (e = print_walk_parts(j, &counted, p, all)))
+        return e;
     int r;
     if (retro_skip_applies(f) && (r = print_lanes_alone(j, p, all)))
         return r;

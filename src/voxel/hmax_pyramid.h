@@ -94,6 +94,18 @@ enum { RETRO_IDEAL_BOX = 64 };
  * could do with the same runs. Global like the counts. */
 enum { RETRO_IDEAL_MAX, RETRO_IDEAL_PLANE, RETRO_IDEAL_ORACLE };
 extern int retro_skip_ideal_kind;
+/* Which part of the ideal walk the kernel's own walk is given (docs/SKIPPING.md, "Window or
+ * schedule"), to tell apart what its windows and its probe schedule each cost: the bound of a
+ * run whose box spans at most B = 2^L cells per axis is its level's window
+ * (RETRO_WINDOW_BLOCKS, the kernel's), the largest height of the run's own box
+ * (RETRO_WINDOW_OWN_BOX, as the ideal bound takes it), or of the B x B cells from the box's
+ * smallest corner where the box spans fewer than B (RETRO_WINDOW_UNALIGNED: what a table of
+ * unaligned B x B maxima per level, a sparse table, would hold); the last two up to boxes of
+ * RETRO_IDEAL_BOX cells, windows above. retro_skip_every: columns probe before every sample
+ * (no batch after a failed probe). Both only where retro_skip_ideal is -1, and still exact (the
+ * boxes hold every cell the run samples). Global like the counts. */
+enum { RETRO_WINDOW_BLOCKS, RETRO_WINDOW_OWN_BOX, RETRO_WINDOW_UNALIGNED };
+extern int retro_skip_window, retro_skip_every;
 
 /* Whether the ybuffer strip skips this frame: mode exact or lod with a pyramid (any
  * per-sample effects: fog changes colours only, bilinear is covered by the bound). */
@@ -323,9 +335,14 @@ retro_skip_run(const retro_pyramid *p, const retro_frame *f, retro_skip_col *c, 
             const int bi = retro_skip_wrap(Imin, S, pow2) >> L, bj = retro_skip_wrap(Jmin, S, pow2) >> L;
 #ifdef RETRO_COUNT_SAMPLES
             /* levels under RETRO_PYR_LMIN have no windows, and their boxes are at most 2 wide */
-            const int ideal = retro_skip_ideal >= 0 && wi <= RETRO_IDEAL_BOX && wj <= RETRO_IDEAL_BOX;
-            const int M = ideal ? retro_skip_box_max(p, S, Imin, Jmin, wi, wj)
-                                : p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
+            const int small = wi <= RETRO_IDEAL_BOX && wj <= RETRO_IDEAL_BOX;
+            const int ideal = retro_skip_ideal >= 0 && small;
+            const int own = ideal || (retro_skip_window == RETRO_WINDOW_OWN_BOX && small);
+            const int unaligned = retro_skip_ideal < 0 && retro_skip_window == RETRO_WINDOW_UNALIGNED &&
+                                  B <= RETRO_IDEAL_BOX && wi < B && wj < B;
+            const int M = own         ? retro_skip_box_max(p, S, Imin, Jmin, wi, wj)
+                          : unaligned ? retro_skip_box_max(p, S, Imin, Jmin, B - 1, B - 1)
+                                      : p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
 #else
             const int M = p->win[L][(size_t)bj * (size_t)p->n[L] + (size_t)bi];
 #endif

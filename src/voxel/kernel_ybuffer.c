@@ -46,7 +46,8 @@ retro_sample_counts retro_ybuffer_counts;
 retro_column_counts *retro_ybuffer_columns;
 int retro_skip_ideal = -1;
 int retro_skip_ideal_kind = RETRO_IDEAL_MAX;
-#define IDEAL_ONE_BY_ONE (retro_skip_ideal >= 0)
+int retro_skip_window = RETRO_WINDOW_BLOCKS, retro_skip_every = 0;
+#define IDEAL_ONE_BY_ONE (retro_skip_ideal >= 0 || retro_skip_every)
 /* Every use has the sample's column in u. */
 #define COUNT_EVAL()                                                                               \
     (retro_ybuffer_counts.evaluated++, retro_ybuffer_columns ? (void)retro_ybuffer_columns[u].evaluated++ : (void)0)
