@@ -49,8 +49,8 @@ static void help(void)
            "              paint, and their share of the frame's samples (W x (D-1)), what\n"
            "              ideal max and plane bounds and an oracle would evaluate\n"
            "              (docs/SKIPPING.md), what the ybuffer walk evaluates given\n"
-           "              the ideal's boxes, its probe schedule, or unaligned windows,\n"
-           "              what 16-lane groups whose lanes each walked\n"
+           "              the ideal's boxes, the ideal's probe schedule or unaligned\n"
+           "              windows, what 16-lane groups whose lanes each walked\n"
            "              as the ybuffer column does would, and simd-avx512's where it\n"
            "              runs; mesh: the triangles submitted, after culling, after\n"
            "              clipping, and the fragments\n"
@@ -209,9 +209,9 @@ static int print_stats(render_job *j, const player_t *p)
         }
         printf("\n");
     }
-    if (retro_skip_applies(f) && (e = print_walk_parts(j, &counted, p, all)))
-        return e;
     int r;
+    if (retro_skip_applies(f) && (r = print_walk_parts(j, &counted, p, all)))
+        return r;
     if (retro_skip_applies(f) && (r = print_lanes_alone(j, p, all)))
         return r;
     /* The vector path (what omp runs too) skips per group of 16 columns: its own counts. Its
