@@ -296,6 +296,7 @@ bench: deps ## time every kernel (mode exact also with skipping off), scene and 
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) $(RESULTS) $(BUILD)/bench-charts.gp \
 	  $(if $(filter-out 0,$(QUICK)),--quick) --no-skip $(BENCH_ARGS)
 	$(Q)sh scripts/skip-columns.sh $(RETRO) $(RESULTS)
+	$(Q)$(call CODE_DIGEST,bench-code.txt)
 
 .PHONY: study-replay
 study-replay: deps ## where a skipping frame's time goes, by replaying probes and stores: RESULTS/study-replay.md (docs/SKIPPING.md)
@@ -310,6 +311,12 @@ accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto char
 	$(Q)RETRO_SHARED=$(SHARED) RETRO_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null)" \
 	  $(RETRO) accuracy -o $(RESULTS)/ACCURACY.md \
 	  --chart $(RESULTS)/accuracy-pareto.svg $(ACCURACY_ARGS)
+	$(Q)$(call CODE_DIGEST,accuracy-code.txt)
+
+# The machine code the run just timed, object by object, beside its results: the README then says
+# which objects a later commit compiles differently (scripts/code_digest.py).
+CODE_DIGEST = python3 scripts/code_digest.py write $(BUILD) $(RESULTS)/$(1) \
+  "commit: $$(git describe --always --dirty --abbrev=12 2>/dev/null)" && echo "  wrote $(RESULTS)/$(1)"
 
 # The only target that writes the committed results/: a full (not quick) run of make bench,
 # and make accuracy and make demo if they ran, then the README's generated figures.

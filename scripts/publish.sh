@@ -12,10 +12,12 @@ dest=$2
 readme=$3
 # the files of a make accuracy run, copied by both kinds of publishing
 copy_accuracy() {
-  for f in ACCURACY.md accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
+  for f in ACCURACY.md accuracy-code.txt accuracy-pareto.svg accuracy-pareto.png accuracy-families.svg accuracy-families.png \
     accuracy-pair-voxel.png accuracy-pair-mesh.png accuracy-pair-diff.png; do
     [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
   done
+  # a digest of an earlier run's build must not stand beside this run
+  [ -f "$runs/accuracy-code.txt" ] || rm -f "$dest/accuracy-code.txt"
 }
 if [ "${4:-}" = --accuracy ]; then
   if [ ! -f "$runs/ACCURACY.md" ]; then
@@ -54,12 +56,13 @@ if grep -q '^> \*\*Noisy run' "$runs/BENCH.md"; then
   echo "warning: $runs/BENCH.md says the run was noisy; publishing it anyway (it says so)" >&2
 fi
 mkdir -p "$dest"
-for f in BENCH.md bench.json bench-speedup.svg bench-resolution.svg bench-distance.svg \
+for f in BENCH.md bench.json bench-code.txt bench-speedup.svg bench-resolution.svg bench-distance.svg \
   bench-speedup.png bench-resolution.png bench-distance.png \
   bench-mesh-resolution.svg bench-mesh-distance.svg bench-mesh-resolution.png bench-mesh-distance.png \
   skip-columns.csv skip-columns.txt skip-columns.svg skip-columns.png study-replay.md; do
   [ -f "$runs/$f" ] && cp "$runs/$f" "$dest/$f" && echo "  COPY    $dest/$f"
 done
+[ -f "$runs/bench-code.txt" ] || rm -f "$dest/bench-code.txt"
 if [ -f "$runs/ACCURACY.md" ]; then
   copy_accuracy
 fi
