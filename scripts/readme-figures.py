@@ -130,14 +130,51 @@ def retimed(md):
     return clause + (f", {left.group(1)} still disturbed at the end" if left else "")
 
 
-def since_block(md, repo):
+def since_block(md, repo, digest=None, build=None):
     """Whether the kernels changed after the published run: the commits since the run's commit that
-    touch src/ or include/, from git in repo. None when git cannot say (no repository, or the run's
-    commit is not in it): the README's block is then left as it is and not checked."""
-    return since_commit(context_field(md, "commit"), repo)
+    touch src/ or include/, from git in repo, and with the run's digest of its build (digest) and
+    a build of this code (build), which objects compile to other machine code. None when git or
+    the objects cannot say (no repository, the run's commit is not in it, no comparable build):
+    the README's block is then left as it is and not checked."""
+    return since_commit(context_field(md, "commit"), repo, digest, build)
 
 
-def since_commit(commit, repo):
+def digest_commit(digest):
+    """The commit a digest file (scripts/code_digest.py) says it is of, or None."""
+    for line in open(digest, encoding="utf-8"):
+        m = re.match(r"# commit: ([0-9a-f]{7,40})$", line.rstrip("\n"))
+        if m:
+            return m.group(1)
+    return None
+
+
+def code_sentence(commit, digest, build):
+    """What the run's objects compile to now: '' when there is no digest of the run's commit
+    (the block then counts commits alone), None when there is one but no build to compare with
+    (an object missing, or built with another compiler or other flags, as make asan's are)."""
+    import os
+    if not digest or not os.path.exists(digest):
+        return ""
+    run = digest_commit(digest)
+    if not run or not (run.startswith(commit) or commit.startswith(run)):
+        return ""
+    import code_digest
+    r = code_digest.compare(digest, build) if build and os.path.isdir(build) else None
+    if r is None or r[2] or r[4]:
+        return None
+    changed, same = r[0], r[3]
+    n = len(changed) + len(same)
+    if not changed:
+        return (f" Built now, all {n} objects of the run's build are its machine code byte for byte "
+                "(`scripts/code_digest.py`): the figures hold for this code.")
+    # the library's objects first, then the CLI's, then the benchmark harness's
+    changed = sorted(changed, key=lambda o: (o.startswith("src/cli/") + 2 * o.startswith("bench/"), o))
+    shown = ", ".join(f"`{o[:-2]}`" for o in changed[:12]) + (", …" if len(changed) > 12 else "")
+    return (f" Built now, {len(changed)} of the run's {n} objects compile to other machine code ({shown}); "
+            f"the other {len(same)} are the run's code byte for byte (`scripts/code_digest.py`).")
+
+
+def since_commit(commit, repo, digest=None, build=None):
     """since_block's sentence for a run of commit (a hash; None when it is not one)."""
     import subprocess
     if not re.fullmatch(r"[0-9a-f]{7,40}", commit):
@@ -149,11 +186,14 @@ def since_commit(commit, repo):
         return None
     if not log:
         return f"The kernel sources (`src/`, `include/`) are those of the run's commit `{commit[:7]}`."
+    code = code_sentence(commit, digest, build)
+    if code is None:
+        return None
     hashes = list(reversed(log))
     n = len(hashes)
     shown = ", ".join(f"`{h}`" for h in hashes[:6]) + (", …" if n > 6 else "")
     return (f"**The kernels changed after this run:** {n} commit{'' if n == 1 else 's'} since `{commit[:7]}` "
-            f"touch{'es' if n == 1 else ''} `src/` or `include/` ({shown}). The figures here are those of the "
+            f"touch{'es' if n == 1 else ''} `src/` or `include/` ({shown}).{code} The figures here are those of the "
             "run's commit until a steady run of the new code is published.")
 
 
@@ -513,12 +553,16 @@ def main(argv):
     raw = os.path.exists(f"{results}/bench.json")
     blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(), raw,
                           json.load(open(f"{results}/bench.json", encoding="utf-8")) if raw else None)
-    since = since_block(open(f"{results}/BENCH.md", encoding="utf-8").read(), os.path.dirname(os.path.abspath(path)))
+    repo = os.path.dirname(os.path.abspath(path))
+    # the build to compare the runs' objects with: RETRO_BUILD, else the repository's build/
+    build = os.environ.get("RETRO_BUILD") or os.path.join(repo, "build")
+    since = since_block(open(f"{results}/BENCH.md", encoding="utf-8").read(), repo,
+                        f"{results}/bench-code.txt", build)
     if since is not None:
         blocks["bench:since"] = since
     else:
-        print("note: git cannot say whether the kernels changed after the published run: "
-              "README's bench:since block is not checked")
+        print("note: git or the build cannot say whether the kernels changed after the published run "
+              f"(objects compared: {build}): README's bench:since block is not checked")
     columns = readme_skipping.skip_columns_block(results)
     if columns:
         blocks["bench:skip-columns"] = columns
@@ -526,7 +570,7 @@ def main(argv):
     blocks.update(accuracy_blocks(accuracy))
     run = accuracy_run(accuracy)
     # a run of edited sources ("-dirty") has no commit to count from; since_commit refuses it
-    since = since_commit(run[1], os.path.dirname(os.path.abspath(path))) if run else None
+    since = since_commit(run[1], repo, f"{results}/accuracy-code.txt", build) if run else None
     if since is not None:
         blocks["accuracy:since"] = since
     else:

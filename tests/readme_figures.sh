@@ -11,6 +11,9 @@ if ! command -v python3 >/dev/null 2>&1; then
   echo "FAIL: python3 missing (make deps)"
   exit 1
 fi
+# the build whose objects the since-blocks compare with the runs' (scripts/code_digest.py)
+RETRO_BUILD=$(dirname "$(dirname "$retro")")
+export RETRO_BUILD
 python3 scripts/readme-figures.py --check results README.md || exit 1
 # The check must be able to fail: alter one median of the run in a copy and expect a diff.
 tmp=$(mktemp -d)
@@ -37,6 +40,36 @@ if [ -n "$first" ] && grep -q '^Machine: .*\. Commit: [0-9a-f]*\.$' results/ACCU
     *"+**The kernels changed after this run:**"*) ;;
     *) echo "FAIL: an accuracy run older than the kernels was not caught: $out" | head -c 600; exit 1 ;;
   esac
+fi
+
+# The since-blocks' objects: where the run left a digest of its build (results/bench-code.txt)
+# and this build is comparable with it (the same compiler and flags, every object there), the
+# block names the objects whose code differs now. A digest altered for one kernel's object must
+# change the block; make asan's build (other flags) cannot be compared, which the tool must see.
+if [ -f results/bench-code.txt ]; then
+  state=$(python3 scripts/code_digest.py diff results/bench-code.txt "$RETRO_BUILD") ||
+    { echo "FAIL: code_digest.py diff: $state"; exit 1; }
+  case $state in
+    *"gone: 0"*"built otherwise: 0") comparable=1 ;;
+    *) comparable=0 ;;
+  esac
+  mkdir -p "$tmp/code"
+  cp results/BENCH.md results/bench.json results/ACCURACY.md "$tmp/code/"
+  obj=src/arch/x86/kernel_simd_avx512.o
+  awk -v o="$obj" '$1 == o { $2 = "0000000000000000" } { print }' results/bench-code.txt >"$tmp/code/bench-code.txt"
+  cmp -s "$tmp/code/bench-code.txt" results/bench-code.txt && { echo "FAIL: could not alter $obj's digest"; exit 1; }
+  out=$(python3 scripts/readme-figures.py --check "$tmp/code" README.md 2>&1)
+  if [ $comparable = 1 ]; then
+    case $out in
+      *"+**The kernels changed after this run:**"*"\`${obj%.o}\`"*) ;;
+      *) echo "FAIL: an object whose code differs from the run's is not named: $out" | head -c 900; exit 1 ;;
+    esac
+  else
+    case $out in
+      *"bench:since block is not checked"*) echo "note: $RETRO_BUILD is not the run's kind of build: its objects are not compared" ;;
+      *) echo "FAIL: a build not comparable with the run's was compared: $out" | head -c 900; exit 1 ;;
+    esac
+  fi
 fi
 
 # Issue 18's blocks, from a run that has them: the committed BENCH.md with a large-frame table
