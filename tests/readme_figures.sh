@@ -268,4 +268,4 @@ echo d >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm ke
 if python3 scripts/readme-figures.py --check "$repo/results" "$repo/README.md" >/dev/null; then
   echo "FAIL: a README that misses a kernel commit after its run passes the check"; exit 1
 fi
-echo "ok: README figures match the committed run, and a changed figure is caught; the omp target's verdict follows its geometric mean; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run are named"
+echo "ok: README figures match the committed run, and a changed figure is caught; the omp target's verdict follows its geometric mean; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run, and the objects whose code changed, are named"
