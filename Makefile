@@ -296,7 +296,7 @@ bench: deps ## time every kernel (mode exact also with skipping off), scene and 
 	$(Q)RETRO_SHARED=$(SHARED) sh scripts/bench.sh $(BENCH_BIN) $(RESULTS) $(BUILD)/bench-charts.gp \
 	  $(if $(filter-out 0,$(QUICK)),--quick) --no-skip $(BENCH_ARGS)
 	$(Q)sh scripts/skip-columns.sh $(RETRO) $(RESULTS)
-	$(Q)$(call CODE_DIGEST,bench-code.txt)
+	$(Q)$(call CODE_DIGEST,bench-code.txt,$(RETRO) $(BENCH_BIN))
 
 .PHONY: study-replay
 study-replay: deps ## where a skipping frame's time goes, by replaying probes and stores: RESULTS/study-replay.md (docs/SKIPPING.md)
@@ -311,12 +311,15 @@ accuracy: $(RETRO) ## what accuracy costs: RESULTS/ACCURACY.md and a Pareto char
 	$(Q)RETRO_SHARED=$(SHARED) RETRO_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null)" \
 	  $(RETRO) accuracy -o $(RESULTS)/ACCURACY.md \
 	  --chart $(RESULTS)/accuracy-pareto.svg $(ACCURACY_ARGS)
-	$(Q)$(call CODE_DIGEST,accuracy-code.txt)
+	$(Q)$(call CODE_DIGEST,accuracy-code.txt,$(RETRO))
 
 # The machine code the run just timed, object by object, beside its results: the README then says
-# which objects a later commit compiles differently (scripts/code_digest.py).
-CODE_DIGEST = python3 scripts/code_digest.py write $(BUILD) $(RESULTS)/$(1) \
-  "commit: $$(git describe --always --dirty --abbrev=12 2>/dev/null)" && echo "  wrote $(RESULTS)/$(1)"
+# which objects a later commit compiles differently (scripts/code_digest.py). Only where the
+# binaries that ran ($(2)) are BUILD's own: binaries named from elsewhere have no objects here.
+CODE_DIGEST = $(if $(filter-out $(BIN)/retro $(BIN)/retro-bench,$(2)), \
+  echo "  note: no $(RESULTS)/$(1): $(2) not built in $(BUILD)", \
+  python3 scripts/code_digest.py write $(BUILD) $(RESULTS)/$(1) \
+  "commit: $$(git describe --always --dirty --abbrev=12 2>/dev/null)" && echo "  wrote $(RESULTS)/$(1)")
 
 # The only target that writes the committed results/: a full (not quick) run of make bench,
 # and make accuracy and make demo if they ran, then the README's generated figures.

@@ -60,4 +60,16 @@ if [ $rc -ne 2 ] || [ -e "$tmp/bad.txt" ] || [ "$(printf '%s\n' "$err" | wc -l)"
   echo "FAIL: a file that is not ELF: exit $rc, output left: $([ -e "$tmp/bad.txt" ] && echo yes || echo no), error: $err"
   exit 1
 fi
-echo "ok: code_digest.py tells changed code from comments and from other builds"
+# make accuracy (and make bench alike) digest the build only where the binaries that ran are its
+# own: binaries named from elsewhere leave a note instead (make -n: the commands, run nothing)
+out=$(make -n --no-print-directory accuracy BUILD=build 2>&1)
+case $out in
+  *"scripts/code_digest.py write build build/results/accuracy-code.txt"*) ;;
+  *) echo "FAIL: make accuracy would not digest its build: $out" | head -c 600; exit 1 ;;
+esac
+out=$(make -n --no-print-directory accuracy BUILD=build RETRO=/bin/true 2>&1)
+case $out in
+  *"note: no build/results/accuracy-code.txt: /bin/true not built in build"*) ;;
+  *) echo "FAIL: make accuracy would digest a build its retro is not from: $out" | head -c 600; exit 1 ;;
+esac
+echo "ok: code_digest.py tells changed code from comments and from other builds; make digests its own builds only"
