@@ -14,7 +14,8 @@ An object's code digest covers what the linker and loader use: every allocated s
 comment does not count), its relocations with the symbols they name, and its defined symbols.
 Its build is the compiler and flags that made it (DWARF's DW_AT_producer; -g is always on),
 so a build with other flags (make asan's) is told apart from changed code rather than counted
-as every object changed. Objects: BUILD/src, BUILD/tools and BUILD/bench (the library, the
+as every object changed. gcc names its flags there; clang (without -grecord-command-line) names
+only itself, so between two clang builds other flags would count as changed code. Objects: BUILD/src, BUILD/tools and BUILD/bench (the library, the
 CLI and the benchmark harness), not the tests or the other builds nested in BUILD.
 """
 import hashlib

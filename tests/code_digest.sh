@@ -10,7 +10,10 @@ if ! command -v python3 >/dev/null 2>&1 || ! command -v readelf >/dev/null 2>&1;
   echo "FAIL: python3 or readelf missing (make deps; binutils)"
   exit 1
 fi
-cc=${CC:-cc}
+# gcc, as for the published runs: its DW_AT_producer names the flags, clang's (without
+# -grecord-command-line) only the compiler, so flags could not be told apart under clang
+cc=gcc
+command -v gcc >/dev/null 2>&1 || { echo "FAIL: gcc missing (the builds this digests are gcc's)"; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/run/src" "$tmp/now/src"
