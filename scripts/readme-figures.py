@@ -574,7 +574,8 @@ def main(argv):
     if since is not None:
         blocks["accuracy:since"] = since
     else:
-        print("note: the accuracy run names no clean commit git knows: README's accuracy:since block is not checked")
+        print("note: the accuracy run names no clean commit git knows, or its objects cannot be compared with "
+              f"{build}: README's accuracy:since block is not checked")
     old = open(path, encoding="utf-8").read()
     new = replace(old, blocks)
     if check:
