@@ -18,6 +18,7 @@ as every object changed. gcc names its flags there; clang (without -grecord-comm
 only itself, so between two clang builds other flags would count as changed code. Objects: BUILD/src, BUILD/tools and BUILD/bench (the library, the
 CLI and the benchmark harness), not the tests or the other builds nested in BUILD.
 """
+import functools
 import hashlib
 import os
 import re
@@ -109,8 +110,11 @@ def objects(build):
     return found
 
 
+@functools.lru_cache(maxsize=None)
 def digest_build(build):
-    """{object: (code digest, producer)} of build; ValueError naming an object that is not ELF64."""
+    """{object: (code digest, producer)} of build; ValueError naming an object that is not ELF64.
+    Kept per build: readme-figures.py compares the benchmark's and the accuracy run's digests with
+    the same build, and reading it runs readelf once per object. Callers do not modify it."""
     table = {}
     for o in objects(build):
         path = os.path.join(build, o)
