@@ -17,6 +17,7 @@
 #include "extras.h"
 extern "C" {
 #include "hmax_pyramid.h"
+#include "machine_probe.h"
 }
 #include "mesh_cases.h"
 #include "options.h"
@@ -182,6 +183,13 @@ static void run_case(benchmark::State &st, const BenchCase *c)
             benchmark::ClobberMemory();
         }
     using benchmark::Counter;
+    // Timed after the frames, on the same pinned thread: why this checkpoint was slow, if it was.
+    if ((c->groups & GROUP_STEADY) && c->threads == 1) {
+        st.counters[PROBE_CLOCK_COUNTER] = machine_probe_clock_ms();
+        double m = machine_probe_memory_ms();
+        if (!std::isnan(m))
+            st.counters[PROBE_MEMORY_COUNTER] = m;
+    }
     double evaluated = count_samples(c, &p, &frame);
     if (!std::isnan(evaluated)) {
         const_cast<BenchCase *>(c)->samples = evaluated;
@@ -411,6 +419,8 @@ int main(int argc, char **argv)
     plan_skip_large(&plan);
     plan_mesh(&plan, quick);
     plan_steady(&plan, STEADY_EVERY);
+    if (machine_probe_init() != 0)
+        std::fprintf(stderr, "note: no memory for the memory probe; the checkpoints time the clock probe only\n");
     for (const auto &c : plan.cases)
         register_case(c.get(), quick);
 
@@ -441,5 +451,6 @@ int main(int argc, char **argv)
             status = 1;
     }
     scenes_free(scenes, nscenes);
+    machine_probe_free();
     return status;
 }

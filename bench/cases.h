@@ -37,6 +37,9 @@ inline double sorted_median(const std::vector<double> &t)
 
 // The counter that carries a frame_median case's time per repetition, in ms.
 constexpr const char *FRAME_MEDIAN_COUNTER = "frame median ms";
+// The checkpoints' machine probes (machine_probe.h), ms, in bench.json beside the frame's time.
+constexpr const char *PROBE_CLOCK_COUNTER = "clock probe ms";
+constexpr const char *PROBE_MEMORY_COUNTER = "memory probe ms";
 
 struct BenchCase {
     const retro_kernel *kernel;
@@ -71,6 +74,9 @@ struct BenchCase {
     double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
     double done_at = std::numeric_limits<double>::quiet_NaN(); // seconds into the run when it finished
+    // GROUP_STEADY at one thread: the medians of machine_probe.h's probes over its repetitions.
+    double probe_clock_ms = std::numeric_limits<double>::quiet_NaN();
+    double probe_memory_ms = std::numeric_limits<double>::quiet_NaN();
     // The median and quartiles of the ratios of this case's frames to another's, timed in turn
     // after the run (in_turn.h): the large-frame table's twins without skipping (skip_large.h),
     // the effect table's fastest kernel for each effect set against none (extras.h).

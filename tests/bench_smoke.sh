@@ -103,6 +103,18 @@ if [ "$n" -lt 9 ]; then # three checkpoints at least, three repetitions each
   echo "FAIL: only $n single-thread checkpoint repetitions in the JSON"
   fail=1
 fi
+# The machine probes (bench/machine_probe.h) beside each single-thread checkpoint: a clock and a
+# memory time per checkpoint, their spreads, and both counters in every 1-thread repetition.
+check "$tmp/steady/BENCH.md" '^| checkpoint | at | 1 thread | [0-9]* threads | clock probe | memory probe |$' \
+  "no probe columns in the steadiness table"
+check "$tmp/steady/BENCH.md" '^| 2 | [0-9]* s | [0-9.]* | [0-9.]* | [0-9.]*[1-9][0-9.]* | [0-9.]*[1-9][0-9.]* |$' \
+  "no third checkpoint with two positive probe times"
+check "$tmp/steady/BENCH.md" '^| spread | |.*| [0-9.]*% ([0-9.]* – [0-9.]*) | [0-9.]*% ([0-9.]* – [0-9.]*) |$' \
+  "no spread of the probes"
+for counter in "clock probe ms" "memory probe ms"; do
+  m=$(grep -c "\"$counter\": [0-9]" "$tmp/steady/bench.json")
+  [ "$m" -ge "$n" ] || { echo "FAIL: \"$counter\" in $m of the JSON's runs, fewer than its $n single-thread checkpoint repetitions"; fail=1; }
+done
 
 # Re-timing (bench/retime.h): block 0, asked for, is timed again with its checkpoints; the JSON
 # keeps only the last timing of each case and BENCH.md says what was re-timed.
