@@ -47,6 +47,10 @@ static struct {
 // remembers per thread where it bound it and would not notice being moved.
 static int bound_cores = 0;
 
+// Cores the checkpoints' clock and throughput probes visit: all, when the bench thread could be
+// pinned (unpinned, "core 1" would be wherever the scheduler put it).
+static int probe_cores = 1;
+
 static void bind_for(int threads)
 {
     if (threads == bound_cores)
@@ -183,12 +187,24 @@ static void run_case(benchmark::State &st, const BenchCase *c)
             benchmark::ClobberMemory();
         }
     using benchmark::Counter;
-    // Timed after the frames, on the same pinned thread: why this checkpoint was slow, if it was.
+    // Timed after the frames: why this checkpoint was slow, if it was. The clock and throughput
+    // probes on every core in turn (the thread moved there and back), the memory probe on the
+    // first.
     if ((c->groups & GROUP_STEADY) && c->threads == 1) {
-        st.counters[PROBE_CLOCK_COUNTER] = machine_probe_clock_ms();
+        char note[160], name[64];
+        for (int core = 0; core < probe_cores; core++) {
+            if (core > 0 && pin_thread_to_cores(core, 1, note, sizeof note) != 0)
+                break;
+            std::snprintf(name, sizeof name, "clock%s, core %d", PROBE_COUNTER, core);
+            st.counters[name] = machine_probe_clock_ms();
+            std::snprintf(name, sizeof name, "throughput%s, core %d", PROBE_COUNTER, core);
+            st.counters[name] = machine_probe_throughput_ms();
+        }
+        if (probe_cores > 1)
+            pin_thread_to_cores(0, 1, note, sizeof note);
         double m = machine_probe_memory_ms();
         if (!std::isnan(m))
-            st.counters[PROBE_MEMORY_COUNTER] = m;
+            st.counters[std::string("memory") + PROBE_COUNTER] = m;
     }
     double evaluated = count_samples(c, &p, &frame);
     if (!std::isnan(evaluated)) {
@@ -419,6 +435,7 @@ int main(int argc, char **argv)
     plan_skip_large(&plan);
     plan_mesh(&plan, quick);
     plan_steady(&plan, STEADY_EVERY);
+    probe_cores = pinned ? ctx.cores : 1;
     if (machine_probe_init() != 0)
         std::fprintf(stderr, "note: no memory for the memory probe; the checkpoints time the clock probe only\n");
     for (const auto &c : plan.cases)

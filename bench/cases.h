@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,9 +38,9 @@ inline double sorted_median(const std::vector<double> &t)
 
 // The counter that carries a frame_median case's time per repetition, in ms.
 constexpr const char *FRAME_MEDIAN_COUNTER = "frame median ms";
-// The checkpoints' machine probes (machine_probe.h), ms, in bench.json beside the frame's time.
-constexpr const char *PROBE_CLOCK_COUNTER = "clock probe ms";
-constexpr const char *PROBE_MEMORY_COUNTER = "memory probe ms";
+// The checkpoints' machine probes (machine_probe.h), ms, in bench.json beside the frame's time:
+// counters named "KIND probe ms" (memory) or "KIND probe ms, core N" (clock, throughput).
+constexpr const char *PROBE_COUNTER = " probe ms";
 
 struct BenchCase {
     const retro_kernel *kernel;
@@ -74,9 +75,9 @@ struct BenchCase {
     double rep_max = std::numeric_limits<double>::quiet_NaN();
     std::string error;           // non-empty when the case was skipped
     double done_at = std::numeric_limits<double>::quiet_NaN(); // seconds into the run when it finished
-    // GROUP_STEADY at one thread: the medians of machine_probe.h's probes over its repetitions.
-    double probe_clock_ms = std::numeric_limits<double>::quiet_NaN();
-    double probe_memory_ms = std::numeric_limits<double>::quiet_NaN();
+    // GROUP_STEADY at one thread: the medians of machine_probe.h's probes over its repetitions,
+    // by counter name.
+    std::map<std::string, double> probes;
     // The median and quartiles of the ratios of this case's frames to another's, timed in turn
     // after the run (in_turn.h): the large-frame table's twins without skipping (skip_large.h),
     // the effect table's fastest kernel for each effect set against none (extras.h).

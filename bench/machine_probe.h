@@ -1,10 +1,12 @@
-/* Why a run was noisy: two probes timed beside the reference frame at each checkpoint
- * (steady.h). The reference frame slowing down says that the machine changed speed, not why.
- * A chain of dependent integer multiplies waits only on the core's clock; a chase of dependent
- * loads through a buffer larger than the core's own caches waits on the memory system (the
- * shared last-level cache and DRAM, which other tenants of a virtual machine's host use too).
- * A frame that slows while the clock probe holds and the memory probe slows waited on memory;
- * one that slows with the clock probe was clocked down. */
+/* Why a run was noisy: probes timed beside the reference frame at each checkpoint (steady.h).
+ * The reference frame slowing down says that the machine changed speed, not why.
+ * - clock: one chain of dependent integer multiply-adds. Each step waits for the one before, so
+ *   it uses a sliver of the core's units and its time follows the core's clock alone.
+ * - throughput: eight independent chains of the same steps, which keep the core's multipliers
+ *   busy. A second hardware thread on the same physical core (another tenant's, on a virtual
+ *   machine's host) takes units from it: up to half its speed, with the clock unchanged.
+ * - memory: a chase of dependent loads through a buffer larger than a core's own caches, which
+ *   waits on the shared last-level cache and DRAM (which other tenants use too). */
 #ifndef RETRO_BENCH_MACHINE_PROBE_H
 #define RETRO_BENCH_MACHINE_PROBE_H
 
@@ -27,6 +29,9 @@ void machine_probe_free(void);
 /* Median ms of 5 runs of a fixed chain of dependent multiply-adds: time per cycle of the core
  * that runs it, times a constant. */
 double machine_probe_clock_ms(void);
+
+/* Median ms of 5 runs of eight independent chains of the clock probe's steps, 10^6 each. */
+double machine_probe_throughput_ms(void);
 
 /* Median ms of 5 runs of a fixed number of dependent loads through the buffer, after one pass
  * through all of it: the cases between two checkpoints evict it, and the probe should time the

@@ -56,7 +56,8 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
     // is skipped when there are no aggregates (one repetition, or every one failed) and,
     // with --benchmark_display_aggregates_only, the first is.
     bool last = false;
-    std::vector<double> each, clock_probe, memory_probe;
+    std::vector<double> each;
+    std::map<std::string, std::vector<double>> probes;
     const char *ms = c->frame_median ? FRAME_MEDIAN_COUNTER : kMsCounter;
     for (const Run &r : runs) {
         if (r.error_occurred) {
@@ -70,9 +71,9 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
             last = true;
         } else {
             each.push_back(counter(r, ms));
-            for (auto [name, v] : {std::pair{PROBE_CLOCK_COUNTER, &clock_probe}, std::pair{PROBE_MEMORY_COUNTER, &memory_probe}})
-                if (double x = counter(r, name); !std::isnan(x))
-                    v->push_back(x);
+            for (const auto &[name, value] : r.counters)
+                if (name.find(PROBE_COUNTER) != std::string::npos)
+                    probes[name].push_back(value.value);
             last |= r.repetitions <= 1;
         }
     }
@@ -84,11 +85,10 @@ void ProgressReporter::ReportRuns(const std::vector<Run> &runs)
         c->rep_min = each.front();
         c->rep_max = each.back();
     }
-    for (auto [v, field] : {std::pair{&clock_probe, &c->probe_clock_ms}, std::pair{&memory_probe, &c->probe_memory_ms}})
-        if (!v->empty()) {
-            std::sort(v->begin(), v->end());
-            *field = sorted_median(*v);
-        }
+    for (auto &[name, v] : probes) {
+        std::sort(v.begin(), v.end());
+        c->probes[name] = sorted_median(v);
+    }
     if (!last)
         return;
     c->ran = true;

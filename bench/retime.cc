@@ -86,7 +86,7 @@ std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
     for (BenchCase *c : cases) {
         c->ran = false;
         c->median_ms = c->cv = c->rep_min = c->rep_max = c->done_at = std::nan("");
-        c->probe_clock_ms = c->probe_memory_ms = std::nan("");
+        c->probes.clear();
         c->reps = 0;
         c->error.clear();
     }

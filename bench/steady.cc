@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -78,7 +79,7 @@ static Spread spread_of(const std::vector<const BenchCase *> &cs)
     return spread_of(t);
 }
 
-// The 1-thread checkpoints' probes (machine_probe.h), in checkpoint order; empty without them.
+// The 1-thread checkpoints that ran the probes (machine_probe.h), in checkpoint order.
 static std::vector<const BenchCase *> probed(const BenchPlan &plan)
 {
     std::vector<const BenchCase *> out;
@@ -87,9 +88,52 @@ static std::vector<const BenchCase *> probed(const BenchPlan &plan)
     if (one == by.end())
         return out;
     for (const BenchCase *c : one->second)
-        if (!std::isnan(c->probe_clock_ms))
+        if (!c->probes.empty())
             out.push_back(c);
     return out;
+}
+
+// The probes' counter names, in the table's order: clock and throughput by core, then memory.
+static std::vector<std::string> probe_names(const std::vector<const BenchCase *> &cs)
+{
+    std::vector<std::string> names;
+    for (const BenchCase *c : cs)
+        for (const auto &kv : c->probes)
+            if (std::find(names.begin(), names.end(), kv.first) == names.end())
+                names.push_back(kv.first);
+    auto rank = [](const std::string &n) {
+        int kind = n.rfind("clock", 0) == 0 ? 0 : n.rfind("throughput", 0) == 0 ? 1 : 2;
+        size_t at = n.rfind("core ");
+        return std::pair{kind, at == std::string::npos ? 0 : std::atoi(n.c_str() + at + 5)};
+    };
+    std::sort(names.begin(), names.end(), [&](const std::string &x, const std::string &y) { return rank(x) < rank(y); });
+    return names;
+}
+
+// "clock, core 0" for "clock probe ms, core 0".
+static std::string probe_title(const std::string &name)
+{
+    std::string t = name;
+    t.erase(t.find(PROBE_COUNTER), std::string(PROBE_COUNTER).size());
+    return t;
+}
+
+// "on core 1" for "clock probe ms, core 1"; "" for a probe of no one core.
+static std::string probe_where(const std::string &name)
+{
+    size_t at = name.rfind("core ");
+    return at == std::string::npos ? "" : " on " + name.substr(at);
+}
+
+// A second hardware thread on the core takes up to half of the throughput probe's units, with
+// the clock unchanged; a spread well short of that is the probe's own scatter and short
+// preemptions, which a quiet run shows too.
+constexpr double SHARED_CORE_DRIFT = 0.25;
+
+static double probe_of(const BenchCase *c, const std::string &name)
+{
+    auto it = c->probes.find(name);
+    return it == c->probes.end() ? std::nan("") : it->second;
 }
 
 static Spread spread_of(std::vector<double> t)
@@ -117,35 +161,78 @@ static double correlation(const std::vector<double> &x, const std::vector<double
     return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : std::nan("");
 }
 
+// The probe of one kind whose values spread most across the checkpoints: its name and spread.
+struct Worst {
+    std::string name;
+    Spread spread{};
+};
+
+static Worst worst_of(const std::vector<const BenchCase *> &cs, const std::vector<std::string> &names,
+                      const char *kind)
+{
+    Worst w;
+    w.spread.drift = -1;
+    for (const std::string &n : names) {
+        if (n.rfind(kind, 0) != 0)
+            continue;
+        std::vector<double> v;
+        for (const BenchCase *c : cs)
+            if (double x = probe_of(c, n); !std::isnan(x))
+                v.push_back(x);
+        if (v.size() >= 3 && spread_of(v).drift > w.spread.drift)
+            w = {n, spread_of(v)};
+    }
+    return w;
+}
+
+// What the probes say about a noisy run: whether the clock changed, whether a core gave the
+// probe fewer of its units at the same clock, and how the memory probe moved with the frame.
 static std::string steady_probe_note(const BenchPlan &plan)
 {
-    std::vector<const BenchCase *> cs = probed(plan);
+    const std::vector<const BenchCase *> cs = probed(plan);
     if (cs.size() < 3)
         return "";
-    std::vector<double> frame, clock, memory;
-    for (const BenchCase *c : cs) {
-        frame.push_back(c->median_ms);
-        clock.push_back(c->probe_clock_ms);
-        memory.push_back(c->probe_memory_ms);
-    }
-    const double clock_drift = spread_of(clock).drift;
+    const std::vector<std::string> names = probe_names(cs);
+    std::string note;
     char b[512];
-    if (clock_drift > NOISY_DRIFT / 2) {
-        std::snprintf(b, sizeof b, "The clock probe spread %.0f%% across the same checkpoints: the core's clock changed "
-                      "during the run.", 100 * clock_drift);
+    const Worst clock = worst_of(cs, names, "clock");
+    if (clock.spread.drift < 0)
+        return "";
+    if (clock.spread.drift > NOISY_DRIFT / 2) {
+        std::snprintf(b, sizeof b, "The clock probe%s spread %.0f%% across the same checkpoints: the core's clock "
+                      "changed during the run.", probe_where(clock.name).c_str(), 100 * clock.spread.drift);
         return b;
     }
-    int n = std::snprintf(b, sizeof b, "The clock probe spread only %.1f%% across the same checkpoints, so the core's "
-                          "clock held: the frame waited longer on something else, such as memory or a core shared "
-                          "with other work", 100 * clock_drift);
-    if (std::none_of(memory.begin(), memory.end(), [](double m) { return std::isnan(m); })) {
-        const double r = correlation(frame, memory);
-        n += std::snprintf(b + n, sizeof b - n, " (the memory probe spread %.0f%%", 100 * spread_of(memory).drift);
+    std::snprintf(b, sizeof b, "The clock probe spread at most %.1f%% across the same checkpoints on any core, so the "
+                  "clocks held.", 100 * clock.spread.drift);
+    note = b;
+    const Worst units = worst_of(cs, names, "throughput");
+    if (units.spread.drift > SHARED_CORE_DRIFT) {
+        std::snprintf(b, sizeof b, " The throughput probe%s spread %.0f%% (%s to %s ms) at that clock: for part of "
+                      "the run the core gave it fewer of its units, as when another hardware thread shares the "
+                      "physical core.", probe_where(units.name).c_str(), 100 * units.spread.drift,
+                      report_ms_cell(units.spread.min).c_str(), report_ms_cell(units.spread.max).c_str());
+        note += b;
+    } else if (units.spread.drift >= 0) {
+        std::snprintf(b, sizeof b, " The throughput probe spread at most %.1f%% on any core.", 100 * units.spread.drift);
+        note += b;
+    }
+    const Worst memory = worst_of(cs, names, "memory");
+    if (memory.spread.drift >= 0) {
+        std::vector<double> frame, mem;
+        for (const BenchCase *c : cs)
+            if (double x = probe_of(c, memory.name); !std::isnan(x)) {
+                frame.push_back(c->median_ms);
+                mem.push_back(x);
+            }
+        const double r = correlation(frame, mem);
+        int n = std::snprintf(b, sizeof b, " The memory probe spread %.0f%%", 100 * memory.spread.drift);
         if (!std::isnan(r))
             n += std::snprintf(b + n, sizeof b - n, "; its correlation with the frame's time at one thread: r = %.2f", r);
-        std::snprintf(b + n, sizeof b - n, ")");
+        std::snprintf(b + n, sizeof b - n, ".");
+        note += b;
     }
-    return std::string(b) + ".";
+    return note;
 }
 
 bool steady_noisy(const BenchPlan &plan, int *threads, double *drift)
@@ -194,21 +281,22 @@ void steady_table(std::ostream &o, const BenchPlan &plan)
          "within its own fraction of a second; these see the machine slowing down or speeding up between cases. "
          "Spread: (max − min) / median; above "
       << static_cast<int>(NOISY_DRIFT * 100) << "% the run is marked noisy.";
-    const bool probes = probed(plan).size() >= 3;
-    if (probes)
-        o << " After the frames of each 1-thread checkpoint, on the same core, two probes (bench/machine_probe.h), "
-             "ms: the clock probe, a chain of dependent multiplies, waits only on the core's clock; the memory "
-             "probe, a chain of dependent loads through "
-          << (MACHINE_PROBE_BYTES >> 20)
-          << " MiB, on the caches shared with other cores and on memory. A frame that slows while the clock "
-             "probe holds was not clocked down.";
+    const std::vector<const BenchCase *> cs1 = probed(plan);
+    const std::vector<std::string> probes = cs1.size() >= 3 ? probe_names(cs1) : std::vector<std::string>{};
+    if (!probes.empty())
+        o << " After the frames of each 1-thread checkpoint, probes of the machine (bench/machine_probe.h), ms: "
+             "on each core in turn, the clock probe (a chain of dependent multiplies, which waits only on the "
+             "core's clock) and the throughput probe (eight independent chains, which keep the core's multipliers "
+             "busy and slow down when another hardware thread shares the physical core); then on the first core "
+             "the memory probe (dependent loads through "
+          << (MACHINE_PROBE_BYTES >> 20) << " MiB, which wait on the caches shared with other cores and on memory).";
     o << "\n\n| checkpoint | at |";
     for (const auto &[t, cs] : by)
         o << " " << t << (t == 1 ? " thread" : " threads") << " |";
-    if (probes)
-        o << " clock probe | memory probe |";
+    for (const std::string &n : probes)
+        o << " " << probe_title(n) << " |";
     o << "\n|--:|--:|";
-    for (size_t i = 0; i < by.size() + (probes ? 2 : 0); i++)
+    for (size_t i = 0; i < by.size() + probes.size(); i++)
         o << "--:|";
     o << "\n";
     std::map<int, std::map<int, const BenchCase *>> rows; // checkpoint -> threads -> case
@@ -226,12 +314,9 @@ void steady_table(std::ostream &o, const BenchPlan &plan)
             auto it = cells.find(t);
             o << " " << report_ms_cell(it == cells.end() ? std::nan("") : it->second->median_ms) << " |";
         }
-        if (probes) {
-            auto it = cells.find(1);
-            const BenchCase *c = it == cells.end() ? nullptr : it->second;
-            o << " " << report_ms_cell(c ? c->probe_clock_ms : std::nan("")) << " | "
-              << report_ms_cell(c ? c->probe_memory_ms : std::nan("")) << " |";
-        }
+        auto one = cells.find(1);
+        for (const std::string &n : probes)
+            o << " " << report_ms_cell(one == cells.end() ? std::nan("") : probe_of(one->second, n)) << " |";
         o << "\n";
     }
     o << "| spread | |";
@@ -242,24 +327,20 @@ void steady_table(std::ostream &o, const BenchPlan &plan)
                       report_ms_cell(s.max).c_str());
         o << b << (s.drift > NOISY_DRIFT ? " ⚠" : "") << " |";
     }
-    if (probes) {
-        std::vector<double> clock, memory;
-        for (const BenchCase *c : probed(plan)) {
-            clock.push_back(c->probe_clock_ms);
-            if (!std::isnan(c->probe_memory_ms))
-                memory.push_back(c->probe_memory_ms);
+    for (const std::string &n : probes) {
+        std::vector<double> v;
+        for (const BenchCase *c : cs1)
+            if (double x = probe_of(c, n); !std::isnan(x))
+                v.push_back(x);
+        if (v.empty()) {
+            o << " – |";
+            continue;
         }
-        for (const std::vector<double> *v : {&clock, &memory}) {
-            if (v->empty()) {
-                o << " – |";
-                continue;
-            }
-            Spread s = spread_of(*v);
-            char b[96];
-            std::snprintf(b, sizeof b, " %.1f%% (%s – %s) |", 100 * s.drift, report_ms_cell(s.min).c_str(),
-                          report_ms_cell(s.max).c_str());
-            o << b;
-        }
+        Spread s = spread_of(v);
+        char b[96];
+        std::snprintf(b, sizeof b, " %.1f%% (%s – %s) |", 100 * s.drift, report_ms_cell(s.min).c_str(),
+                      report_ms_cell(s.max).c_str());
+        o << b;
     }
     o << "\n";
 }

@@ -103,18 +103,32 @@ if [ "$n" -lt 9 ]; then # three checkpoints at least, three repetitions each
   echo "FAIL: only $n single-thread checkpoint repetitions in the JSON"
   fail=1
 fi
-# The machine probes (bench/machine_probe.h) beside each single-thread checkpoint: a clock and a
-# memory time per checkpoint, their spreads, and both counters in every 1-thread repetition.
-check "$tmp/steady/BENCH.md" '^| checkpoint | at | 1 thread | [0-9]* threads | clock probe | memory probe |$' \
+# The machine probes (bench/machine_probe.h) beside each single-thread checkpoint: clock and
+# throughput on each core, memory on the first; a time per checkpoint, their spreads, and the
+# counters in every 1-thread repetition.
+cores=$(grep -m1 '^| checkpoint |' "$tmp/steady/BENCH.md" | grep -o 'clock, core [0-9]*' | wc -l)
+[ "$(nproc)" -lt 2 ] || [ "$cores" -ge 2 ] || { echo "FAIL: the probes visited $cores of $(nproc) cores"; fail=1; }
+probe_cols= counters=
+for kind in clock throughput; do
+  c=0
+  while [ "$c" -lt "$cores" ]; do
+    probe_cols="$probe_cols| $kind, core $c " counters="$counters;$kind probe ms, core $c"
+    c=$((c + 1))
+  done
+done
+probe_cols="$probe_cols| memory |" counters="${counters#;};memory probe ms" probes=$((2 * cores + 1))
+check "$tmp/steady/BENCH.md" "^| checkpoint | at | 1 thread |.* threads $probe_cols\$" \
   "no probe columns in the steadiness table"
-check "$tmp/steady/BENCH.md" '^| 2 | [0-9]* s | [0-9.]* | [0-9.]* | [0-9.]*[1-9][0-9.]* | [0-9.]*[1-9][0-9.]* |$' \
-  "no third checkpoint with two positive probe times"
-check "$tmp/steady/BENCH.md" '^| spread | |.*| [0-9.]*% ([0-9.]* – [0-9.]*) | [0-9.]*% ([0-9.]* – [0-9.]*) |$' \
+check "$tmp/steady/BENCH.md" "^| 2 | [0-9]* s | [0-9.]* | [0-9.]* \(| [0-9.]*[1-9][0-9.]* \)\{$probes\}|\$" \
+  "no third checkpoint with $probes positive probe times"
+check "$tmp/steady/BENCH.md" "^| spread | |.*\(| [0-9.]*% ([0-9.]* – [0-9.]*) \)\{$probes\}|\$" \
   "no spread of the probes"
-for counter in "clock probe ms" "memory probe ms"; do
+IFS=';'
+for counter in $counters; do
   m=$(grep -c "\"$counter\": [0-9]" "$tmp/steady/bench.json")
   [ "$m" -ge "$n" ] || { echo "FAIL: \"$counter\" in $m of the JSON's runs, fewer than its $n single-thread checkpoint repetitions"; fail=1; }
 done
+unset IFS
 
 # Re-timing (bench/retime.h): block 0, asked for, is timed again with its checkpoints; the JSON
 # keeps only the last timing of each case and BENCH.md says what was re-timed.
