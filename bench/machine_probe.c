@@ -8,8 +8,8 @@
 #include <time.h>
 
 #define PROBE_RUNS 5
-#define CLOCK_STEPS 1000000L /* about 2 ms on a 2 to 4 GHz core (4 cycles per step) */
-#define MEMORY_STEPS 100000L /* a few ms at an L3 latency each */
+#define CLOCK_STEPS 1000000L /* a multiply and an add per step: some 4 million cycles in all */
+#define MEMORY_STEPS 100000L /* each an L3 hit once the buffer is warm, when the machine is quiet */
 
 static uint32_t *cycle;
 static size_t cycle_len;

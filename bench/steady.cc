@@ -185,53 +185,70 @@ static Worst worst_of(const std::vector<const BenchCase *> &cs, const std::vecto
     return w;
 }
 
-// What the probes say about a noisy run: whether the clock changed, whether a core gave the
-// probe fewer of its units at the same clock, and how the memory probe moved with the frame.
-static std::string steady_probe_note(const BenchPlan &plan)
+// The series of one probe over the checkpoints that have it, with the 1-thread frame's times.
+static void series(const std::vector<const BenchCase *> &cs, const std::string &name, std::vector<double> *probe,
+                   std::vector<double> *frame)
+{
+    for (const BenchCase *c : cs)
+        if (double x = probe_of(c, name); !std::isnan(x)) {
+            probe->push_back(x);
+            frame->push_back(c->median_ms);
+        }
+}
+
+// What the probes say about a noisy run whose reference frame spread frame_drift: whether the
+// clocks moved as much as the frame did, and how the first core's throughput and memory probes
+// moved with the 1-thread frame, which runs on that core.
+static std::string steady_probe_note(const BenchPlan &plan, double frame_drift)
 {
     const std::vector<const BenchCase *> cs = probed(plan);
     if (cs.size() < 3)
         return "";
     const std::vector<std::string> names = probe_names(cs);
-    std::string note;
-    char b[512];
     const Worst clock = worst_of(cs, names, "clock");
     if (clock.spread.drift < 0)
         return "";
-    if (clock.spread.drift > NOISY_DRIFT / 2) {
-        std::snprintf(b, sizeof b, "The clock probe%s spread %.0f%% across the same checkpoints: the core's clock "
-                      "changed during the run.", probe_where(clock.name).c_str(), 100 * clock.spread.drift);
-        return b;
+    char b[512];
+    std::string note;
+    if (clock.spread.drift >= frame_drift / 2) {
+        std::snprintf(b, sizeof b, "The clock probe%s spread %.1f%% across the same checkpoints, as much as the frame: "
+                      "the core's clock changed during the run.", probe_where(clock.name).c_str(),
+                      100 * clock.spread.drift);
+        note = b;
+    } else {
+        std::snprintf(b, sizeof b, "The clock probes spread at most %.1f%% on any core, well short of the frame's "
+                      "%.0f%%: the clocks do not explain it.", 100 * clock.spread.drift, 100 * frame_drift);
+        note = b;
     }
-    std::snprintf(b, sizeof b, "The clock probe spread at most %.1f%% across the same checkpoints on any core, so the "
-                  "clocks held.", 100 * clock.spread.drift);
-    note = b;
     const Worst units = worst_of(cs, names, "throughput");
-    if (units.spread.drift > SHARED_CORE_DRIFT) {
-        std::snprintf(b, sizeof b, " The throughput probe%s spread %.0f%% (%s to %s ms) at that clock: for part of "
-                      "the run the core gave it fewer of its units, as when another hardware thread shares the "
+    if (clock.spread.drift < frame_drift / 2 && units.spread.drift > SHARED_CORE_DRIFT) {
+        std::snprintf(b, sizeof b, " The throughput probe%s spread %.0f%% (%s to %s ms) at those clocks: for part of "
+                      "the run that core gave it fewer of its units, as when another hardware thread shares the "
                       "physical core.", probe_where(units.name).c_str(), 100 * units.spread.drift,
                       report_ms_cell(units.spread.min).c_str(), report_ms_cell(units.spread.max).c_str());
         note += b;
-    } else if (units.spread.drift >= 0) {
-        std::snprintf(b, sizeof b, " The throughput probe spread at most %.1f%% on any core.", 100 * units.spread.drift);
-        note += b;
     }
-    const Worst memory = worst_of(cs, names, "memory");
-    if (memory.spread.drift >= 0) {
-        std::vector<double> frame, mem;
-        for (const BenchCase *c : cs)
-            if (double x = probe_of(c, memory.name); !std::isnan(x)) {
-                frame.push_back(c->median_ms);
-                mem.push_back(x);
-            }
-        const double r = correlation(frame, mem);
-        int n = std::snprintf(b, sizeof b, " The memory probe spread %.0f%%", 100 * memory.spread.drift);
-        if (!std::isnan(r))
-            n += std::snprintf(b + n, sizeof b - n, "; its correlation with the frame's time at one thread: r = %.2f", r);
-        std::snprintf(b + n, sizeof b - n, ".");
-        note += b;
+    // The first core's probes against the 1-thread frame timed on it just before.
+    std::string with;
+    for (const std::string &n : names) {
+        if (n.rfind("clock", 0) == 0 || (n.find("core ") != std::string::npos && probe_where(n) != " on core 0"))
+            continue;
+        std::vector<double> probe, frame;
+        series(cs, n, &probe, &frame);
+        if (probe.size() < 3)
+            continue;
+        const double r = correlation(frame, probe);
+        std::string kind = n.substr(0, n.find(PROBE_COUNTER));
+        if (std::isnan(r))
+            std::snprintf(b, sizeof b, "%s the %s probe spread %.0f%%", with.empty() ? "" : ";", kind.c_str(),
+                          100 * spread_of(probe).drift);
+        else
+            std::snprintf(b, sizeof b, "%s the %s probe spread %.0f%%, r = %.2f", with.empty() ? "" : ";",
+                          kind.c_str(), 100 * spread_of(probe).drift, r);
+        with += b;
     }
+    if (!with.empty())
+        note += " On the first core, with Pearson's r against the 1-thread frame's time there:" + with + ".";
     return note;
 }
 
@@ -264,7 +281,7 @@ std::string steady_note(const BenchPlan &plan)
                   "(Machine steadiness, below): the machine's speed changed during the run, so rows timed "
                   "at different moments may differ by as much.",
                   t, t == 1 ? "" : "s", 100 * d);
-    std::string why = steady_probe_note(plan);
+    std::string why = steady_probe_note(plan, d);
     return why.empty() ? b : std::string(b) + " " + why;
 }
 

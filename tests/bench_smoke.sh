@@ -129,6 +129,10 @@ for counter in $counters; do
   [ "$m" -ge "$n" ] || { echo "FAIL: \"$counter\" in $m of the JSON's runs, fewer than its $n single-thread checkpoint repetitions"; fail=1; }
 done
 unset IFS
+# A run the checkpoints call noisy says what the probes saw (bench/steady.cc, steady_probe_note).
+if grep -q '^> \*\*Noisy run.\*\*.*across the run.s checkpoints' "$tmp/steady/BENCH.md"; then
+  check "$tmp/steady/BENCH.md" '^> \*\*Noisy run.\*\*.* The clock probe.*r = ' "no probes' reading in the noisy note"
+fi
 
 # Re-timing (bench/retime.h): block 0, asked for, is timed again with its checkpoints; the JSON
 # keeps only the last timing of each case and BENCH.md says what was re-timed.
