@@ -437,7 +437,7 @@ int main(int argc, char **argv)
     plan_steady(&plan, STEADY_EVERY);
     probe_cores = pinned ? ctx.cores : 1;
     if (machine_probe_init() != 0)
-        std::fprintf(stderr, "note: no memory for the memory probe; the checkpoints time the clock probe only\n");
+        std::fprintf(stderr, "note: no memory for the memory probe; the checkpoints run the clock and throughput probes only\n");
     for (const auto &c : plan.cases)
         register_case(c.get(), quick);
 
