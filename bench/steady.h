@@ -25,12 +25,13 @@ void plan_steady(BenchPlan *plan, int every);
 // get that count and spread. False when fewer than three checkpoints of every count ran.
 bool steady_noisy(const BenchPlan &plan, int *threads, double *drift);
 
-// The sentence for BENCH.md's noisy note ("The reference frame ... drifted ..."), or "" when
-// the drift is within NOISY_DRIFT or unknown.
+// The sentences for BENCH.md's noisy note ("The reference frame ... spread ...", then what the
+// machine probes saw: machine_probe.h), or "" when the drift is within NOISY_DRIFT or unknown.
 std::string steady_note(const BenchPlan &plan);
 
-// BENCH.md's section: the reference frame's median at each checkpoint, when it ran, and the
-// spread per thread count; nothing when fewer than three checkpoints ran.
+// BENCH.md's section: the reference frame's median at each checkpoint, when it ran, the probes
+// timed after its 1-thread frames, and the spread of each column; nothing when fewer than three
+// checkpoints ran.
 void steady_table(std::ostream &o, const BenchPlan &plan);
 
 #endif
