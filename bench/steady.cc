@@ -69,7 +69,12 @@ struct Spread {
     double min, median, max, drift; // drift: (max - min) / median
 };
 
-static Spread spread_of(std::vector<double> t);
+static Spread spread_of(std::vector<double> t)
+{
+    std::sort(t.begin(), t.end());
+    const double m = sorted_median(t);
+    return {t.front(), m, t.back(), (t.back() - t.front()) / m};
+}
 
 static Spread spread_of(const std::vector<const BenchCase *> &cs)
 {
@@ -136,13 +141,6 @@ static double probe_of(const BenchCase *c, const std::string &name)
     return it == c->probes.end() ? std::nan("") : it->second;
 }
 
-static Spread spread_of(std::vector<double> t)
-{
-    std::sort(t.begin(), t.end());
-    const double m = sorted_median(t);
-    return {t.front(), m, t.back(), (t.back() - t.front()) / m};
-}
-
 // Pearson's r of two equally long series; NaN when either is constant.
 static double correlation(const std::vector<double> &x, const std::vector<double> &y)
 {
@@ -161,6 +159,21 @@ static double correlation(const std::vector<double> &x, const std::vector<double
     return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : std::nan("");
 }
 
+// The values of one probe over the checkpoints that have it and, when frame is given, the
+// 1-thread frame's times at the same checkpoints.
+static std::vector<double> series(const std::vector<const BenchCase *> &cs, const std::string &name,
+                                  std::vector<double> *frame = nullptr)
+{
+    std::vector<double> probe;
+    for (const BenchCase *c : cs)
+        if (double x = probe_of(c, name); !std::isnan(x)) {
+            probe.push_back(x);
+            if (frame)
+                frame->push_back(c->median_ms);
+        }
+    return probe;
+}
+
 // The probe of one kind whose values spread most across the checkpoints: its name and spread.
 struct Worst {
     std::string name;
@@ -175,25 +188,14 @@ static Worst worst_of(const std::vector<const BenchCase *> &cs, const std::vecto
     for (const std::string &n : names) {
         if (n.rfind(kind, 0) != 0)
             continue;
-        std::vector<double> v;
-        for (const BenchCase *c : cs)
-            if (double x = probe_of(c, n); !std::isnan(x))
-                v.push_back(x);
-        if (v.size() >= 3 && spread_of(v).drift > w.spread.drift)
-            w = {n, spread_of(v)};
+        const std::vector<double> v = series(cs, n);
+        if (v.size() < 3)
+            continue;
+        const Spread sp = spread_of(v);
+        if (sp.drift > w.spread.drift)
+            w = {n, sp};
     }
     return w;
-}
-
-// The series of one probe over the checkpoints that have it, with the 1-thread frame's times.
-static void series(const std::vector<const BenchCase *> &cs, const std::string &name, std::vector<double> *probe,
-                   std::vector<double> *frame)
-{
-    for (const BenchCase *c : cs)
-        if (double x = probe_of(c, name); !std::isnan(x)) {
-            probe->push_back(x);
-            frame->push_back(c->median_ms);
-        }
 }
 
 // What the probes say about a noisy run whose reference frame spread frame_drift: whether the
@@ -233,8 +235,8 @@ static std::string steady_probe_note(const BenchPlan &plan, double frame_drift)
     for (const std::string &n : names) {
         if (n.rfind("clock", 0) == 0 || (n.find("core ") != std::string::npos && probe_where(n) != " on core 0"))
             continue;
-        std::vector<double> probe, frame;
-        series(cs, n, &probe, &frame);
+        std::vector<double> frame;
+        const std::vector<double> probe = series(cs, n, &frame);
         if (probe.size() < 3)
             continue;
         const double r = correlation(frame, probe);
@@ -345,10 +347,7 @@ void steady_table(std::ostream &o, const BenchPlan &plan)
         o << b << (s.drift > NOISY_DRIFT ? " ⚠" : "") << " |";
     }
     for (const std::string &n : probes) {
-        std::vector<double> v;
-        for (const BenchCase *c : cs1)
-            if (double x = probe_of(c, n); !std::isnan(x))
-                v.push_back(x);
+        const std::vector<double> v = series(cs1, n);
         if (v.empty()) {
             o << " – |";
             continue;
