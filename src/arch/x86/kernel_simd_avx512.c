@@ -61,9 +61,9 @@
 #define v_load_first_f(p, n, m) _mm512_maskz_loadu_ps(m, p)
 #define v_store_first_f(p, n, m, x) _mm512_mask_storeu_ps(p, m, x)
 #define v_store_i(p, a) _mm512_storeu_si512(p, a)
-#define v_gather_cells(c, idx) _mm512_i32gather_epi32(idx, (const void *)(c), 4)
+#define v_gather_cells(c, idx) SIMD_NAME(gather_words)(c, idx)
 #define v_gather_bytes(h, idx) SIMD_NAME(gather_bytes)(h, idx)
-#define v_gather_bytes_pad(h, idx) _mm512_and_si512(_mm512_i32gather_epi32(idx, (const void *)(h), 1), _mm512_set1_epi32(0xff))
+#define v_gather_bytes_pad(h, idx) _mm512_and_si512(SIMD_NAME(gather_at_bytes)(h, idx), _mm512_set1_epi32(0xff))
 #define v_sub_f64(a, h) SIMD_NAME(sub_f64)(a, h)
 #define v_last_i(a) _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_alignr_epi32(a, a, 15)))
 #define V_SHIFT_UP(p, fill, k) _mm512_alignr_epi32(p, fill, 16 - (k))
@@ -81,6 +81,29 @@
 RETRO_SIMD_INLINE __mmask16 SIMD_NAME(first)(int n)
 {
     return (__mmask16)(n < SIMD_LANES ? (1u << (n > 0 ? n : 0)) - 1 : 0xffffu);
+}
+
+/* vpgatherdd merges into its destination, so the CPU waits for that register's last value even
+ * when every lane is fetched. For an unmasked gather gcc picks any register as the destination,
+ * often the one holding the previous step's (masked) cells, which chains a walk's gathers one
+ * after another through their results. A mask the compiler cannot prove full keeps the zero
+ * source it would otherwise drop, and a zero has no producer to wait for. */
+RETRO_SIMD_INLINE __mmask16 SIMD_NAME(every_lane)(void)
+{
+    __mmask16 m;
+    __asm__("kxnorw %0, %0, %0" : "=k"(m));
+    return m;
+}
+
+RETRO_SIMD_INLINE __m512i SIMD_NAME(gather_words)(const uint32_t *c, __m512i idx)
+{
+    return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), SIMD_NAME(every_lane)(), idx, (const void *)c, 4);
+}
+
+/* The 4 bytes at each byte offset, of which the caller keeps the low one. */
+RETRO_SIMD_INLINE __m512i SIMD_NAME(gather_at_bytes)(const uint8_t *h, __m512i idx)
+{
+    return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), SIMD_NAME(every_lane)(), idx, (const void *)h, 1);
 }
 
 /* Bytes are not gathered: 16 scalar loads. */
