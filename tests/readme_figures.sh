@@ -56,12 +56,15 @@ if [ -f results/bench-code.txt ]; then
   mkdir -p "$tmp/code"
   cp results/BENCH.md results/bench.json results/ACCURACY.md "$tmp/code/"
   # an object of the library that is still the run's code: altering one already changed since
-  # the run would leave the block as it is
-  printf '%s\n' "$state" | awk '/^  /{ print $1 }' >"$tmp/changed"
-  obj=$(awk '$1 ~ /^src\/.*\.o$/ { print $1 }' results/bench-code.txt | grep -vxF -f "$tmp/changed" | head -n 1)
-  if [ -z "$obj" ]; then
-    echo "FAIL: every library object differs from the run's, so none is left to alter; publish a new run"
-    exit 1
+  # the run would leave the block as it is (a build of another kind compares none: any will do)
+  obj=src/arch/x86/kernel_simd_avx512.o
+  if [ $comparable = 1 ]; then
+    printf '%s\n' "$state" | awk '/^  /{ print $1 }' >"$tmp/changed"
+    obj=$(awk '$1 ~ /^src\/.*\.o$/ { print $1 }' results/bench-code.txt | grep -vxF -f "$tmp/changed" | head -n 1)
+    if [ -z "$obj" ]; then
+      echo "FAIL: every library object differs from the run's, so none is left to alter; publish a new run"
+      exit 1
+    fi
   fi
   awk -v o="$obj" '$1 == o { $2 = "0000000000000000" } { print }' results/bench-code.txt >"$tmp/code/bench-code.txt"
   cmp -s "$tmp/code/bench-code.txt" results/bench-code.txt && { echo "FAIL: could not alter $obj's digest"; exit 1; }
