@@ -34,24 +34,37 @@ static std::string quoted(const std::string &s)
     return q + "\"";
 }
 
-// The chart carries the same warning as the top of BENCH.md.
-static std::string noisy_note(const BenchPlan &plan, const RunContext &ctx)
+// The chart carries the same warning as the top of BENCH.md, a clause per line: on one line
+// the three clauses ran past both edges of an 800-pixel chart.
+static std::vector<std::string> noisy_note(const BenchPlan &plan, const RunContext &ctx)
 {
-    int n = report_noisy_rows(plan);
-    std::string s;
+    std::vector<std::string> lines;
     if (ctx.busy)
-        s += "NOISY RUN: the machine was busy when the run started";
-    if (n)
-        s += std::string(s.empty() ? "NOISY RUN: " : "; ") + std::to_string(n) +
-             " rows spread over " + std::to_string(static_cast<int>(NOISY_CV * 100)) +
-             "% (marked noisy)";
+        lines.push_back("the machine was busy when the run started");
+    if (int n = report_noisy_rows(plan))
+        lines.push_back(std::to_string(n) + (n == 1 ? " row" : " rows") + " spread over " +
+                        std::to_string(static_cast<int>(NOISY_CV * 100)) + "% (marked noisy)");
     int t = 0;
     double drift = 0;
     if (steady_noisy(plan, &t, &drift))
-        s += std::string(s.empty() ? "NOISY RUN: " : "; ") + "the reference frame at " + std::to_string(t) +
-             (t == 1 ? " thread" : " threads") + " drifted " + std::to_string(static_cast<int>(std::lround(100 * drift))) +
-             "% across the run";
-    return s;
+        lines.push_back("the reference frame at " + std::to_string(t) + (t == 1 ? " thread" : " threads") +
+                        " drifted " + std::to_string(static_cast<int>(std::lround(100 * drift))) + "% across the run");
+    if (!lines.empty())
+        lines.front() = "NOISY RUN: " + lines.front();
+    return lines;
+}
+
+// The note's lines as one gnuplot string: quoted() keeps a newline, which becomes the escape
+// that gnuplot's double quotes read as one.
+static std::string note_label(const std::vector<std::string> &lines)
+{
+    std::string joined;
+    for (const std::string &l : lines)
+        joined += (joined.empty() ? "" : "\n") + l;
+    std::string q;
+    for (char ch : quoted(joined))
+        q += ch == '\n' ? std::string("\\n") : std::string(1, ch);
+    return q;
 }
 
 static void speedup_chart(std::ostream &o, const BenchPlan &plan, const RunContext &ctx)
@@ -72,6 +85,7 @@ static void speedup_chart(std::ostream &o, const BenchPlan &plan, const RunConte
     }
     if (modes.empty())
         return;
+    const std::vector<std::string> note = noisy_note(plan, ctx);
     o << "$speedup << EOD\n";
     for (auto [k, t] : keys) {
         ReportRow r{&retro_kernels[k], t};
@@ -85,14 +99,15 @@ static void speedup_chart(std::ostream &o, const BenchPlan &plan, const RunConte
       << "set title " << quoted("Speedup over naive (geometric mean over the scenes), " +
                                 std::to_string(plan.W) + "x" + std::to_string(plan.H) +
                                 ", D " + std::to_string(plan.D))
-      << "\nset label 1 " << quoted(noisy_note(plan, ctx))
-      << " at graph 0.5, graph 0.96 center textcolor rgb 'red'"
+      << "\nset label 1 " << note_label(note)
+      << " at graph 0.5, graph 0.97 center front textcolor rgb 'red'"
       << "\nset ylabel 'times faster than naive (log scale, higher is better)'\n"
       << "set style data histograms\nset style histogram clustered gap 1\n"
       << "set style fill solid 0.85 border -1\nset grid ytics\n"
       // Log scale: the fastest kernels are two orders of magnitude ahead of naive.
       // Room above the tallest bar for its value, the key above the plot, clear of bars.
-      << "set logscale y\nset yrange [0.5:" << num(top * 4) << "]\n"
+      // A line of the noisy note takes about half a decade of this axis.
+      << "set logscale y\nset yrange [0.5:" << num(top * 4 * std::pow(10.0, 0.5 * note.size())) << "]\n"
       << "set key outside top center horizontal\nset xtics rotate by 25 right\n"
       << "plot";
     // Clustered bars: n columns and gap 1 put column j at x = i + (j - (n-1)/2) / (n+1).
