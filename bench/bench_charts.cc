@@ -143,10 +143,7 @@ static void sweep_chart(std::ostream &o, const BenchPlan &plan, unsigned group, 
     }
     o << "EOD\nreset\nset output out.'/bench-" << block << ".'.ext\n"
       << "set title " << quoted(title) << "\nset xlabel '" << xlabel << "'\n"
-      // Log-log: kernels ten times apart stay readable, and a slope of one means time
-      // proportional to the swept quantity.
-      << "set ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n"
-      << "set key top left\nplot";
+      << sweep_axes_gp(xs) << "plot";
     for (size_t j = 0; j < rows.size(); j++)
         o << (j ? ", ''" : (" $" + std::string(block))) << " using 2:" << j + 3
           << (j ? "" : ":xtic(1)") << " with linespoints lw 2 pt 7 title "

@@ -240,8 +240,7 @@ static void sweep_chart(std::ostream &o, const BenchPlan &plan, unsigned voxel_g
         o << "\n";
     }
     o << "EOD\nreset\nset output out.'/bench-" << block << ".'.ext\nset title \"" << title << "\"\nset xlabel '"
-      << xlabel << "'\nset ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n"
-      << "set key top left\nplot";
+      << xlabel << "'\n" << sweep_axes_gp(xs) << "plot";
     for (size_t j = 0; j < rows.size(); j++)
         o << (j ? ", ''" : (" " + data)) << " using 2:" << j + 3 << (j ? "" : ":xtic(1)")
           << " with linespoints lw 2 pt " << (rows[j].voxel ? 5 : 7) << " title \"" << rows[j].label << "\"";

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,4 +38,23 @@ inline SweepAxis distance_axis(const BenchPlan &plan)
         a.points.push_back({plan.W, plan.H, d});
     }
     return a;
+}
+
+// The gnuplot settings both sweep charts share. Log-log: kernels ten times apart stay readable,
+// and a slope of one means time proportional to the swept quantity. The x range pads the
+// first and last points by a quarter of their value, so neither sits on the border (where
+// gnuplot dropped the first point's tick label). The key goes below the plot, where no line
+// can run through it, and the tick labels are slanted: 1280x720 and 1920x1080 are a third of
+// a decade apart and overlapped level.
+inline std::string sweep_axes_gp(const std::vector<double> &xs)
+{
+    double lo = xs.empty() ? 1 : xs.front(), hi = lo;
+    for (double x : xs) {
+        lo = x < lo ? x : lo;
+        hi = x > hi ? x : hi;
+    }
+    std::ostringstream o;
+    o << "set ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n"
+      << "set xrange [" << lo / 1.25 << ":" << hi * 1.25 << "]\nset xtics rotate by 25 right\nset key below\n";
+    return o.str();
 }

@@ -71,6 +71,10 @@ check "$tmp/ns/bench.json" "\"name\": \"$yb\"" "--no-skip lost the skipping case
 check "$tmp/ns/bench.json" '"evaluated/frame"' "no evaluated/frame counter"
 check "$tmp/ns/BENCH.md" '| `ybuffer` (no skipping) | 1 |' "no row without skipping in BENCH.md"
 check "$tmp/ns.gp" '"ybuffer, no skipping"' "no line without skipping in the charts script"
+# the sweep charts pad their x range (a point on the border lost its tick label) and keep the
+# key below the plot, clear of the lines
+check "$tmp/ns.gp" '^set xrange \[[0-9.]*:[0-9.]*\]$' "the sweep charts' x range is not set"
+check "$tmp/ns.gp" '^set key below$' "the sweep charts' key is not below the plot"
 
 # The large-frame pair (issue 18's skipping ratio): omp with and without skipping at 1920x1080,
 # D 4000, planned without --no-skip, and its table with the ratio, the ratio of the pairs timed
