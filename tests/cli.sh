@@ -58,6 +58,15 @@ done
 "$retro" accuracy --poses 1 --seed 8732044540224338163 -o "$tmp/acc.md" --chart "$tmp/acc.svg" 2>/dev/null &&
   [ "$(grep -c '^| [a-z]' "$tmp/acc.md")" -ge 8 ] && grep -q '<svg' "$tmp/acc.svg" ||
   { echo "FAIL: retro accuracy table and chart"; fails=$((fails + 1)); }
+# The chart names each variant of the table once, beside its point (accuracy_metrics.c places
+# the labels itself).
+awk -F'|' '/^\| variant/ { t = 1; next } t && /^\|--/ { next } t && /^\| / { gsub(/^ +| +$/, "", $2); print $2; next } t { exit }' \
+  "$tmp/acc.md" >"$tmp/acc.labels"
+[ "$(wc -l <"$tmp/acc.labels")" -ge 8 ] || { echo "FAIL: retro accuracy: no variants read from the table"; fails=$((fails + 1)); }
+while IFS= read -r label; do
+  [ "$(grep -c "<text>$label</text>" "$tmp/acc.svg")" -eq 1 ] ||
+    { echo "FAIL: retro accuracy: the chart does not name '$label' once"; fails=$((fails + 1)); }
+done <"$tmp/acc.labels"
 # binary32 and binary64 disagree only at cell and row boundaries: a large error means a frame
 # was rendered from the wrong map (a stale cache across scenes).
 exact_err=$(awk -F'|' '/^\| variant/ { for (i = 1; i <= NF; i++) if ($i ~ /pixels differ/) col = i }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "accuracy_metrics.h"
+#include "chart_labels.h"
 
 double acc_rand(uint64_t *s)
 {
@@ -100,6 +101,66 @@ int acc_path_ok(const char *path)
     return 1;
 }
 
+/* The charts' frame: the error axis is fixed (truth's 0 is plotted at 0.001), the time axis
+ * whole decades around the points with room on the right for a label. Pixels are approximate
+ * for the 800x560 chart with its key below; the labels' places need them only roughly. */
+#define CHART_CANVAS_W 800.0
+#define CHART_CANVAS_H 560.0
+
+static chart_frame chart_frame_of(const acc_row *rows, int n, int families)
+{
+    double a = INFINITY, b = 0;
+    for (int i = 0; i < n; i++) {
+        a = fmin(a, rows[i].ms);
+        b = fmax(b, rows[i].ms);
+        if (!families) {
+            a = fmin(a, rows[i].ms_y);
+            b = fmax(b, rows[i].ms_y);
+        }
+    }
+    if (!(a > 0) || !isfinite(b)) { /* no timed row: any decade will do */
+        a = 1;
+        b = 1;
+    }
+    return (chart_frame){pow(10, floor(log10(a) - 0.15)), pow(10, ceil(log10(b) + 0.6)), 0.0005, 100, 665, 425, 8.5, 16};
+}
+
+static double chart_error(const acc_row *r)
+{
+    return r->pixel_pct > 0 ? r->pixel_pct : 1e-3;
+}
+
+/* A `set label` per row, at the place chart_labels.c chose; none when out of memory. */
+static void put_labels(FILE *g, const chart_frame *fr, const acc_row *rows, int n, int families)
+{
+    double *v = malloc(sizeof *v * (size_t)(3 * n + 1));
+    const char **labels = malloc(sizeof *labels * (size_t)(n + 1));
+    chart_place *at = malloc(sizeof *at * (size_t)(n + 1));
+    if (v && labels && at) {
+        double *x = v, *y = v + n, *xy = v + 2 * n; /* xy: ybuffer's points, at the same errors */
+        for (int i = 0; i < n; i++) {
+            x[i] = rows[i].ms;
+            y[i] = chart_error(&rows[i]);
+            xy[i] = rows[i].ms_y;
+            labels[i] = rows[i].label;
+        }
+        if (chart_place_labels(fr, x, y, labels, n, xy, y, families ? 0 : n, at) == 0)
+            for (int i = 0; i < n; i++) {
+                fprintf(g, "set label %d ", i + 1);
+                put_gnuplot_string(g, labels[i]);
+                fprintf(g, " at %.6g,%.6g %s offset screen %.4f,%.4f noenhanced front\n", x[i], y[i], at[i].align,
+                        at[i].dx / CHART_CANVAS_W, at[i].dy / CHART_CANVAS_H);
+                if (at[i].leader) /* from the point to where its label starts, stopping short of both */
+                    fprintf(g, "set arrow %d from first %.6g, first %.6g rto screen %.4f, screen %.4f nohead "
+                               "lc rgb '#999999' back\n",
+                            i + 1, x[i], y[i], 0.8 * at[i].dx / CHART_CANVAS_W, 0.8 * at[i].dy / CHART_CANVAS_H);
+            }
+    }
+    free(v);
+    free(labels);
+    free(at);
+}
+
 /* One gnuplot run for one terminal, the data inline, so nothing but the chart is written. The
  * key sits below the plot: inside it, it covered the cheapest variants' points. */
 static int plot(const char *term, const char *out, const acc_row *rows, int n, int families)
@@ -109,28 +170,26 @@ static int plot(const char *term, const char *out, const acc_row *rows, int n, i
         return -1;
     fprintf(g, "$d << EOD\n");
     for (int i = 0; i < n; i++) /* error axis is logarithmic: truth (0) sits at its floor */
-        fprintf(g, "\"%s\" %.4f %.6f %.4f %d\n", rows[i].label, rows[i].ms, rows[i].pixel_pct > 0 ? rows[i].pixel_pct : 1e-3,
-                rows[i].ms_y, rows[i].family && !strcmp(rows[i].family, "mesh"));
-    fprintf(g, "EOD\nset terminal %s size 800,560 background rgb '#ffffff'\nset output ", term);
+        fprintf(g, "\"%s\" %.4f %.6f %.4f %d\n", rows[i].label, rows[i].ms, chart_error(&rows[i]), rows[i].ms_y,
+                rows[i].family && !strcmp(rows[i].family, "mesh"));
+    fprintf(g, "EOD\nset terminal %s size %d,%d background rgb '#ffffff'\nset output ", term, (int)CHART_CANVAS_W, (int)CHART_CANVAS_H);
     put_gnuplot_string(g, out);
+    const chart_frame fr = chart_frame_of(rows, n, families);
+    fprintf(g, "\nset logscale xy\nset xrange [%g:%g]\nset yrange [%g:%g]\nset grid\nset key below horizontal\n", fr.xlo,
+            fr.xhi, fr.ylo, fr.yhi);
+    put_labels(g, &fr, rows, n, families);
     if (families) {
-        fprintf(g, "\nset title 'Across families: time per frame against error (vs the mesh in binary64)'\n"
+        fprintf(g, "set title 'Across families: time per frame against error (vs the mesh in binary64)'\n"
                    "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
                    "set ylabel 'pixels differing from the mesh in binary64 (%%, log; itself at 0.001)'\n"
-                   "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key below horizontal\n"
-                   "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
                    "plot $d using 2:($5 == 0 ? $3 : 1/0) with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'voxel', "
-                   "$d using 2:($5 == 1 ? $3 : 1/0) with points pt 9 ps 1.4 lc rgb '#2ca02c' title 'mesh', "
-                   "$d using 2:3:1 with labels offset 1,0.8 left notitle\n");
+                   "$d using 2:($5 == 1 ? $3 : 1/0) with points pt 9 ps 1.4 lc rgb '#2ca02c' title 'mesh'\n");
         return pclose(g) == 0 ? 0 : -1;
     }
-    fprintf(g, "\nset title 'What accuracy costs: time per frame against error (vs truth)'\n"
+    fprintf(g, "set title 'What accuracy costs: time per frame against error (vs truth)'\n"
                "set xlabel 'median ms/frame, 640x480, D 800 (log)'\n"
                "set ylabel 'pixels differing from truth (%%, log; truth itself plotted at 0.001)'\n"
-               "set logscale xy\nset yrange [0.0005:100]\nset grid\nset key below horizontal\n"
-               "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
                "plot $d using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'fastest kernel for the mode', "
-               "$d using 2:3:1 with labels offset 1,0.8 left notitle, "
                "$d using 4:3 with points pt 5 ps 1.0 lc rgb '#d62728' title 'ybuffer (same scalar kernel for all)'\n");
     return pclose(g) == 0 ? 0 : -1;
 }

@@ -1,0 +1,40 @@
+/* Where the accuracy charts' labels go (accuracy_metrics.c): gnuplot's `with labels` puts every
+ * label at the same offset from its point, and variants close in time and error (lod 0.02 and
+ * half; exact, fixed and truth against the mesh) printed over each other. */
+#ifndef RETRO_CLI_CHART_LABELS_H
+#define RETRO_CLI_CHART_LABELS_H
+
+/* A log-log chart's plot area in approximate pixels, and the size of its labels' text there:
+ * the widest advance of a character and the height of a line, over the terminals that draw it. */
+typedef struct {
+    double xlo, xhi, ylo, yhi; /* the axes' ranges, all > 0 */
+    double width, height;      /* the plot area */
+    double char_w, char_h;
+} chart_frame;
+
+typedef struct {
+    double x0, y0, x1, y1; /* pixels from the plot's lower left corner */
+} chart_box;
+
+/* A label's place: gnuplot's alignment, the offset from its point in pixels (up positive), and
+ * the box it covers. */
+typedef struct {
+    const char *align; /* "left", "right" or "center" */
+    double dx, dy;
+    int leader; /* far enough from its point to want a line to it */
+    chart_box box;
+} chart_place;
+
+/* Places the labels of n points (x[i], y[i]): each at one of 28 places around its point (the
+ * four corners, the sides, above and below, near and up to four lines out), first in
+ * turn, then moved in rounds to its cheapest place given all the others until none moves. A
+ * place costs what it overlaps: the outside of the plot, the marks (the n points and any
+ * further m points (mx[j], my[j]), each a box of 10 pixels) and, twice over, the other labels.
+ * out has n entries. Returns 0, or -1 when out of memory. */
+int chart_place_labels(const chart_frame *fr, const double *x, const double *y, const char *const *labels, int n,
+                       const double *mx, const double *my, int m, chart_place *out);
+
+/* The overlap of two boxes, in square pixels. */
+double chart_box_overlap(chart_box a, chart_box b);
+
+#endif
