@@ -152,7 +152,7 @@ static void put_labels(FILE *g, const chart_frame *fr, const acc_row *rows, int 
                         at[i].dx / CHART_CANVAS_W, at[i].dy / CHART_CANVAS_H);
                 if (at[i].leader) /* from the point to where its label starts, stopping short of both */
                     fprintf(g, "set arrow %d from first %.6g, first %.6g rto screen %.4f, screen %.4f nohead "
-                               "lc rgb '#999999' back\n",
+                               "lc rgb '#666666' back\n",
                             i + 1, x[i], y[i], 0.8 * at[i].dx / CHART_CANVAS_W, 0.8 * at[i].dy / CHART_CANVAS_H);
             }
     }

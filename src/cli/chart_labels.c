@@ -44,16 +44,30 @@ static chart_box place_box(const chart_frame *fr, chart_box at, double w, int c)
     return (chart_box){x0, ay - fr->char_h / 2, x0 + w, ay + fr->char_h / 2};
 }
 
+/* The distance from a point (the centre of its mark) to the nearest point of a box. */
+static double box_distance(chart_box m, chart_box b)
+{
+    const double px = (m.x0 + m.x1) / 2, py = (m.y0 + m.y1) / 2;
+    const double dx = fmax(fmax(b.x0 - px, px - b.x1), 0), dy = fmax(fmax(b.y0 - py, py - b.y1), 0);
+    return hypot(dx, dy);
+}
+
 /* What label i at place c overlaps: the plot's outside, the points, and the labels of `placed`
- * (counted twice: covering a label is worse than covering a point), but not its own. A place
- * further out costs a little more, so that a free near place wins. */
+ * (counted twice: covering a label is worse than covering a point), but not its own. A label
+ * nearer another point of the n than its own reads as that point's, which costs as much as
+ * covering most of a point; a place further out costs a little more, so that a free near
+ * place wins. */
 static double cost(const chart_frame *fr, const chart_box *marks, int points, const chart_place *out,
                    const int *placed, int n, int i, chart_box b, int c)
 {
     const chart_box plot = {0, 0, fr->width, fr->height};
     double sum = (b.x1 - b.x0) * (b.y1 - b.y0) - chart_box_overlap(b, plot) + 0.01 * c;
-    for (int j = 0; j < points; j++)
+    const double own = box_distance(marks[i], b);
+    for (int j = 0; j < points; j++) {
         sum += chart_box_overlap(b, marks[j]);
+        if (j < n && j != i && box_distance(marks[j], b) < own)
+            sum += 60;
+    }
     for (int j = 0; j < n; j++)
         if (j != i && placed[j])
             sum += 2 * chart_box_overlap(b, out[j].box);

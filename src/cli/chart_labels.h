@@ -29,7 +29,8 @@ typedef struct {
  * four corners, the sides, above and below, near and up to four lines out), first in
  * turn, then moved in rounds to its cheapest place given all the others until none moves. A
  * place costs what it overlaps: the outside of the plot, the marks (the n points and any
- * further m points (mx[j], my[j]), each a box of 10 pixels) and, twice over, the other labels.
+ * further m points (mx[j], my[j]), each a box of 10 pixels) and, twice over, the other labels;
+ * and it costs more for each of the n points nearer to it than its own.
  * out has n entries. Returns 0, or -1 when out of memory. */
 int chart_place_labels(const chart_frame *fr, const double *x, const double *y, const char *const *labels, int n,
                        const double *mx, const double *my, int m, chart_place *out);
