@@ -110,15 +110,14 @@ int acc_path_ok(const char *path)
 static chart_frame chart_frame_of(const acc_row *rows, int n, int families)
 {
     double a = INFINITY, b = 0;
-    for (int i = 0; i < n; i++) {
-        a = fmin(a, rows[i].ms);
-        b = fmax(b, rows[i].ms);
-        if (!families) {
-            a = fmin(a, rows[i].ms_y);
-            b = fmax(b, rows[i].ms_y);
+    for (int i = 0; i < 2 * n; i++) { /* the timed rows' times, and ybuffer's on the Pareto chart */
+        const double t = i < n ? rows[i].ms : families ? NAN : rows[i - n].ms_y;
+        if (t > 0 && isfinite(t)) {
+            a = fmin(a, t);
+            b = fmax(b, t);
         }
     }
-    if (!(a > 0) || !isfinite(b)) { /* no timed row: any decade will do */
+    if (!(b > 0)) { /* no timed row: any decade will do */
         a = 1;
         b = 1;
     }
@@ -130,22 +129,29 @@ static double chart_error(const acc_row *r)
     return r->pixel_pct > 0 ? r->pixel_pct : 1e-3;
 }
 
-/* A `set label` per row, at the place chart_labels.c chose; none when out of memory. */
+/* A `set label` per timed row, at the place chart_labels.c chose; none when out of memory. */
 static void put_labels(FILE *g, const chart_frame *fr, const acc_row *rows, int n, int families)
 {
-    double *v = malloc(sizeof *v * (size_t)(3 * n + 1));
+    double *v = malloc(sizeof *v * (size_t)(4 * n + 1));
     const char **labels = malloc(sizeof *labels * (size_t)(n + 1));
     chart_place *at = malloc(sizeof *at * (size_t)(n + 1));
     if (v && labels && at) {
-        double *x = v, *y = v + n, *xy = v + 2 * n; /* xy: ybuffer's points, at the same errors */
+        /* the timed rows' points, and ybuffer's beside them (the Pareto chart marks both) */
+        double *x = v, *y = v + n, *mx = v + 2 * n, *my = v + 3 * n;
+        int k = 0, m = 0;
         for (int i = 0; i < n; i++) {
-            x[i] = rows[i].ms;
-            y[i] = chart_error(&rows[i]);
-            xy[i] = rows[i].ms_y;
-            labels[i] = rows[i].label;
+            if (rows[i].ms > 0 && isfinite(rows[i].ms)) {
+                x[k] = rows[i].ms;
+                y[k] = chart_error(&rows[i]);
+                labels[k++] = rows[i].label;
+            }
+            if (!families && rows[i].ms_y > 0 && isfinite(rows[i].ms_y)) {
+                mx[m] = rows[i].ms_y;
+                my[m++] = chart_error(&rows[i]);
+            }
         }
-        if (chart_place_labels(fr, x, y, labels, n, xy, y, families ? 0 : n, at) == 0)
-            for (int i = 0; i < n; i++) {
+        if (chart_place_labels(fr, x, y, labels, k, mx, my, m, at) == 0)
+            for (int i = 0; i < k; i++) {
                 fprintf(g, "set label %d ", i + 1);
                 put_gnuplot_string(g, labels[i]);
                 fprintf(g, " at %.6g,%.6g %s offset screen %.4f,%.4f noenhanced front\n", x[i], y[i], at[i].align,
