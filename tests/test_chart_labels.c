@@ -8,6 +8,15 @@
 
 static const chart_frame frame = {0.01, 100, 0.0005, 100, 665, 425, 8.5, 16};
 
+/* The distance from point (x, y) to the nearer end of box b's text (chart_labels.c's rule). */
+static double end_distance(const chart_frame *fr, double x, double y, chart_box b)
+{
+    const double px = (log10(x) - log10(fr->xlo)) * fr->width / (log10(fr->xhi) - log10(fr->xlo));
+    const double py = (log10(y) - log10(fr->ylo)) * fr->height / (log10(fr->yhi) - log10(fr->ylo));
+    const double mid = (b.y0 + b.y1) / 2;
+    return fmin(hypot(px - b.x0, py - mid), hypot(px - b.x1, py - mid));
+}
+
 static void no_overlaps(const chart_frame *fr, const double *x, const double *y, const char *const *labels, int n,
                         const double *mx, const double *my, int m)
 {
@@ -21,6 +30,11 @@ static void no_overlaps(const chart_frame *fr, const double *x, const double *y,
                            labels[i]);
         for (int j = i + 1; j < n; j++)
             cr_expect_eq(chart_box_overlap(b, at[j].box), 0, "'%s' and '%s' overlap", labels[i], labels[j]);
+        /* an end of it nearer its own point than any other it names, so that it reads as its
+         * own, or a leader line tying it to its own */
+        for (int j = 0; j < n; j++)
+            cr_expect(j == i || at[i].leader || end_distance(fr, x[j], y[j], b) >= end_distance(fr, x[i], y[i], b),
+                      "'%s' has an end nearer '%s' than its own point", labels[i], labels[j]);
         for (int j = 0; j < n + m; j++) { /* no label covers a point's centre */
             const double px = j < n ? x[j] : mx[j - n], py = j < n ? y[j] : my[j - n];
             const double cx = (log10(px) - log10(fr->xlo)) * fr->width / (log10(fr->xhi) - log10(fr->xlo));
@@ -49,6 +63,28 @@ Test(chart_labels, the_families_charts_crowded_points_get_apart)
     static const double y[] = {20.3, 20.4, 26.0, 20.8, 22.6, 32.3, 36.0, 29.7, 36.0, 0.0015, 0.001, 0.0011};
     const chart_frame fr = {0.01, 1000, 0.0005, 100, 665, 425, 8.5, 16};
     no_overlaps(&fr, x, y, labels, 12, NULL, NULL, 0);
+}
+
+/* Another run's: the peer's point just left of fixed's label above fixed's point, and course's
+ * point below and right of the peer's. */
+Test(chart_labels, a_label_does_not_sit_beside_another_point)
+{
+    static const char *const labels[] = {"truth",    "exact",    "course", "fixed",
+                                         "lod 0.005", "lod 0.02", "lod 0.05", "half",
+                                         "peer: classic demo", "mesh binary32", "mesh binary64", "mesh int"};
+    static const double x[] = {1.425, 0.226, 0.638, 1.085, 0.199, 0.093, 0.060, 0.123, 0.607, 12, 77, 97};
+    static const double y[] = {20.5, 20.6, 26.6, 20.9, 22.8, 32.3, 36.6, 30.2, 36.7, 0.0015, 0.001, 0.0011};
+    const chart_frame fr = {0.01, 1000, 0.0005, 100, 665, 425, 8.5, 16};
+    no_overlaps(&fr, x, y, labels, 12, NULL, NULL, 0);
+}
+
+/* b's point sits just left of where a's label would start at its first place (13.5 pixels from
+ * that end, against 15.4 from a's own point): a's label goes elsewhere. */
+Test(chart_labels, a_label_is_not_anchored_beside_another_point)
+{
+    static const char *const labels[] = {"alpha", "beta"};
+    static const double x[] = {0.637, 0.595}, y[] = {0.1562, 0.2269};
+    no_overlaps(&frame, x, y, labels, 2, NULL, NULL, 0);
 }
 
 /* A label whose point sits in a corner stays inside the plot. */

@@ -44,28 +44,29 @@ static chart_box place_box(const chart_frame *fr, chart_box at, double w, int c)
     return (chart_box){x0, ay - fr->char_h / 2, x0 + w, ay + fr->char_h / 2};
 }
 
-/* The distance from a point (the centre of its mark) to the nearest point of a box. */
-static double box_distance(chart_box m, chart_box b)
+/* The distance from a point (the centre of its mark) to the nearer end of a label's text (the
+ * middle of its left or right edge): the eye gives a label to the point beside one of its ends,
+ * whichever way gnuplot aligned it. */
+static double end_distance(chart_box m, chart_box b)
 {
-    const double px = (m.x0 + m.x1) / 2, py = (m.y0 + m.y1) / 2;
-    const double dx = fmax(fmax(b.x0 - px, px - b.x1), 0), dy = fmax(fmax(b.y0 - py, py - b.y1), 0);
-    return hypot(dx, dy);
+    const double px = (m.x0 + m.x1) / 2, py = (m.y0 + m.y1) / 2, mid = (b.y0 + b.y1) / 2;
+    return fmin(hypot(px - b.x0, py - mid), hypot(px - b.x1, py - mid));
 }
 
 /* What label i at place c overlaps: the plot's outside, the points, and the labels of `placed`
  * (counted twice: covering a label is worse than covering a point), but not its own. A label
- * nearer another point of the n than its own reads as that point's, which costs as much as
- * covering most of a point; a place further out costs a little more, so that a free near
+ * with an end nearer another point of the n than its own reads as that point's, which costs as
+ * much as covering most of a point, unless a leader line ties it to its own; a place further out costs a little more, so that a free near
  * place wins. */
 static double cost(const chart_frame *fr, const chart_box *marks, int points, const chart_place *out,
                    const int *placed, int n, int i, chart_box b, int c)
 {
     const chart_box plot = {0, 0, fr->width, fr->height};
     double sum = (b.x1 - b.x0) * (b.y1 - b.y0) - chart_box_overlap(b, plot) + 0.01 * c;
-    const double own = box_distance(marks[i], b);
+    const double own = end_distance(marks[i], b);
     for (int j = 0; j < points; j++) {
         sum += chart_box_overlap(b, marks[j]);
-        if (j < n && j != i && box_distance(marks[j], b) < own)
+        if (c < NEAR && j < n && j != i && end_distance(marks[j], b) < own)
             sum += 60;
     }
     for (int j = 0; j < n; j++)
