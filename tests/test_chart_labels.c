@@ -54,28 +54,26 @@ Test(chart_labels, the_pareto_charts_crowded_points_get_apart)
     no_overlaps(&frame, x, y, labels, 9, xy, y, 9);
 }
 
+/* The families chart's variants, and its frame: the mesh's points take the time axis to 1000. */
+static const char *const families[] = {"truth",    "exact",    "course", "fixed",
+                                       "lod 0.005", "lod 0.02", "lod 0.05", "half",
+                                       "peer: classic demo", "mesh binary32", "mesh binary64", "mesh int"};
+static const chart_frame families_frame = {0.01, 1000, 0.0005, 100, 665, 425, 8.5, 16};
+
 Test(chart_labels, the_families_charts_crowded_points_get_apart)
 {
-    static const char *const labels[] = {"truth",    "exact",    "course", "fixed",
-                                         "lod 0.005", "lod 0.02", "lod 0.05", "half",
-                                         "peer: classic demo", "mesh binary32", "mesh binary64", "mesh int"};
     static const double x[] = {1.39, 0.215, 0.61, 1.06, 0.198, 0.097, 0.061, 0.12, 0.51, 12.1, 77, 96};
     static const double y[] = {20.3, 20.4, 26.0, 20.8, 22.6, 32.3, 36.0, 29.7, 36.0, 0.0015, 0.001, 0.0011};
-    const chart_frame fr = {0.01, 1000, 0.0005, 100, 665, 425, 8.5, 16};
-    no_overlaps(&fr, x, y, labels, 12, NULL, NULL, 0);
+    no_overlaps(&families_frame, x, y, families, 12, NULL, NULL, 0);
 }
 
 /* Another run's: the peer's point just left of fixed's label above fixed's point, and course's
  * point below and right of the peer's. */
 Test(chart_labels, a_label_does_not_sit_beside_another_point)
 {
-    static const char *const labels[] = {"truth",    "exact",    "course", "fixed",
-                                         "lod 0.005", "lod 0.02", "lod 0.05", "half",
-                                         "peer: classic demo", "mesh binary32", "mesh binary64", "mesh int"};
     static const double x[] = {1.425, 0.226, 0.638, 1.085, 0.199, 0.093, 0.060, 0.123, 0.607, 12, 77, 97};
     static const double y[] = {20.5, 20.6, 26.6, 20.9, 22.8, 32.3, 36.6, 30.2, 36.7, 0.0015, 0.001, 0.0011};
-    const chart_frame fr = {0.01, 1000, 0.0005, 100, 665, 425, 8.5, 16};
-    no_overlaps(&fr, x, y, labels, 12, NULL, NULL, 0);
+    no_overlaps(&families_frame, x, y, families, 12, NULL, NULL, 0);
 }
 
 /* b's point sits just left of where a's label would start at its first place (13.5 pixels from
