@@ -3,6 +3,7 @@
 // (W, H, D) a case of that point was run at.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <string>
@@ -48,13 +49,11 @@ inline SweepAxis distance_axis(const BenchPlan &plan)
 // a decade apart and overlapped level.
 inline std::string sweep_axes_gp(const std::vector<double> &xs)
 {
-    double lo = xs.empty() ? 1 : xs.front(), hi = lo;
-    for (double x : xs) {
-        lo = x < lo ? x : lo;
-        hi = x > hi ? x : hi;
-    }
+    const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
     std::ostringstream o;
-    o << "set ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n"
-      << "set xrange [" << lo / 1.25 << ":" << hi * 1.25 << "]\nset xtics rotate by 25 right\nset key below\n";
+    o << "set ylabel 'ms/frame (log scale, lower is better)'\nset logscale xy\nset grid\n";
+    if (!xs.empty())
+        o << "set xrange [" << *lo / 1.25 << ":" << *hi * 1.25 << "]\n";
+    o << "set xtics rotate by 25 right\nset key below\n";
     return o.str();
 }

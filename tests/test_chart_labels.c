@@ -8,15 +8,6 @@
 
 static const chart_frame frame = {0.01, 100, 0.0005, 100, 665, 425, 8.5, 16};
 
-/* The distance from point (x, y) to the nearer end of box b's text (chart_labels.c's rule). */
-static double end_distance(const chart_frame *fr, double x, double y, chart_box b)
-{
-    const double px = (log10(x) - log10(fr->xlo)) * fr->width / (log10(fr->xhi) - log10(fr->xlo));
-    const double py = (log10(y) - log10(fr->ylo)) * fr->height / (log10(fr->yhi) - log10(fr->ylo));
-    const double mid = (b.y0 + b.y1) / 2;
-    return fmin(hypot(px - b.x0, py - mid), hypot(px - b.x1, py - mid));
-}
-
 static void no_overlaps(const chart_frame *fr, const double *x, const double *y, const char *const *labels, int n,
                         const double *mx, const double *my, int m)
 {
@@ -32,14 +23,13 @@ static void no_overlaps(const chart_frame *fr, const double *x, const double *y,
             cr_expect_eq(chart_box_overlap(b, at[j].box), 0, "'%s' and '%s' overlap", labels[i], labels[j]);
         /* an end of it nearer its own point than any other it names, so that it reads as its
          * own, or a leader line tying it to its own */
+        const double own = chart_end_distance(chart_pixel(fr, x[i], y[i]), b);
         for (int j = 0; j < n; j++)
-            cr_expect(j == i || at[i].leader || end_distance(fr, x[j], y[j], b) >= end_distance(fr, x[i], y[i], b),
+            cr_expect(j == i || at[i].leader || chart_end_distance(chart_pixel(fr, x[j], y[j]), b) >= own,
                       "'%s' has an end nearer '%s' than its own point", labels[i], labels[j]);
         for (int j = 0; j < n + m; j++) { /* no label covers a point's centre */
-            const double px = j < n ? x[j] : mx[j - n], py = j < n ? y[j] : my[j - n];
-            const double cx = (log10(px) - log10(fr->xlo)) * fr->width / (log10(fr->xhi) - log10(fr->xlo));
-            const double cy = (log10(py) - log10(fr->ylo)) * fr->height / (log10(fr->yhi) - log10(fr->ylo));
-            cr_expect(!(b.x0 < cx && cx < b.x1 && b.y0 < cy && cy < b.y1), "'%s' covers point %d", labels[i], j);
+            const chart_point c = j < n ? chart_pixel(fr, x[j], y[j]) : chart_pixel(fr, mx[j - n], my[j - n]);
+            cr_expect(!(b.x0 < c.x && c.x < b.x1 && b.y0 < c.y && c.y < b.y1), "'%s' covers point %d", labels[i], j);
         }
     }
 }

@@ -16,6 +16,10 @@ typedef struct {
     double x0, y0, x1, y1; /* pixels from the plot's lower left corner */
 } chart_box;
 
+typedef struct {
+    double x, y; /* pixels from the plot's lower left corner */
+} chart_point;
+
 /* A label's place: gnuplot's alignment, the offset from its point in pixels (up positive), and
  * the box it covers. */
 typedef struct {
@@ -37,5 +41,13 @@ int chart_place_labels(const chart_frame *fr, const double *x, const double *y, 
 
 /* The overlap of two boxes, in square pixels. */
 double chart_box_overlap(chart_box a, chart_box b);
+
+/* Where data point (x, y) sits on the plot, in pixels. */
+chart_point chart_pixel(const chart_frame *fr, double x, double y);
+
+/* The distance from a point to the nearer end of a label's text (the middle of its left or
+ * right edge): the eye gives a label to the point beside one of its ends, whichever way gnuplot
+ * aligned it. */
+double chart_end_distance(chart_point p, chart_box b);
 
 #endif
