@@ -101,14 +101,15 @@ static void speedup_chart(std::ostream &o, const BenchPlan &plan, const RunConte
                                 ", D " + std::to_string(plan.D))
       << "\nset label 1 " << note_label(note)
       << " at graph 0.5, graph 0.97 center front textcolor rgb 'red'"
-      << "\nset ylabel 'times faster than naive (log scale, higher is better)'\n"
+      << "\nset ylabel 'times faster than naive (log scale)'\n"
       << "set style data histograms\nset style histogram clustered gap 1\n"
       << "set style fill solid 0.85 border -1\nset grid ytics\n"
       // Log scale: the fastest kernels are two orders of magnitude ahead of naive.
-      // Room above the tallest bar for its value, the key above the plot, clear of bars.
-      // A line of the noisy note takes about half a decade of this axis.
+      // Room above the tallest bar for its value; the key below the plot, clear of the bars
+      // (outside at the top, gnuplot puts it above the title). A line of the noisy note takes
+      // about half a decade of this axis.
       << "set logscale y\nset yrange [0.5:" << num(top * 4 * std::pow(10.0, 0.5 * note.size())) << "]\n"
-      << "set key outside top center horizontal\nset xtics rotate by 25 right\n"
+      << "set key below\nset xtics rotate by 25 right\n"
       << "plot";
     // Clustered bars: n columns and gap 1 put column j at x = i + (j - (n-1)/2) / (n+1).
     const double n = static_cast<double>(modes.size());

@@ -45,6 +45,9 @@ check "$tmp/bench.json" '"retro_binding"' "no binding in the JSON context"
 check "$tmp/BENCH.md" '| `naive` | 1 |' "no naive row in BENCH.md"
 check "$tmp/charts.gp" '"naive"' "no naive bar in the charts script"
 check "$tmp/out" "$case" "no progress line for the case"
+# the speedup chart's key below the plot: outside at the top, gnuplot put it above the title
+sed -n '/bench-speedup/,/^plot/p' "$tmp/charts.gp" | grep -q '^set key below$' ||
+  { echo "FAIL: the speedup chart's key is not below the plot"; fail=1; }
 # A noisy run's warning on the speedup chart, a clause per line, each short enough to fit the
 # 800-pixel chart (on one line it ran past both edges). Whether this run is noisy depends on
 # the machine, so the check applies when it is.
