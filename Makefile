@@ -325,7 +325,8 @@ CODE_DIGEST = $(if $(filter-out $(BIN)/retro $(BIN)/retro-bench,$(2)), \
 # and make accuracy and make demo if they ran, then the README's generated figures.
 .PHONY: bench-csv
 bench-csv: ## the last run's bench.json as CSV: RESULTS/bench.csv
-	$(Q)python3 scripts/bench-csv.py $(RESULTS)/bench.json >$(RESULTS)/bench.csv.tmp
+	$(Q)test -f $(RESULTS)/bench.json || { echo "error: no $(RESULTS)/bench.json (make bench first)" >&2; exit 2; }
+	$(Q)python3 scripts/bench-csv.py $(RESULTS)/bench.json >$(RESULTS)/bench.csv.tmp || { rm -f $(RESULTS)/bench.csv.tmp; exit 2; }
 	$(Q)mv $(RESULTS)/bench.csv.tmp $(RESULTS)/bench.csv && echo "  wrote $(RESULTS)/bench.csv"
 
 .PHONY: publish publish-accuracy

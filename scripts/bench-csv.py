@@ -6,11 +6,23 @@ usage: bench-csv.py BENCH.json > bench.csv
 """
 import csv
 import json
+import signal
 import sys
 
-if len(sys.argv) != 2:
-    sys.exit(__doc__)
-run = json.load(open(sys.argv[1], encoding="utf-8"))
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # piped into head: stop quietly, as a C program does
+
+if sys.argv[1:2] in (["-h"], ["--help"]):
+    print(__doc__.strip())
+    sys.exit(0)
+if len(sys.argv) != 2 or sys.argv[1].startswith("-"):
+    print("bench-csv.py: usage: bench-csv.py BENCH.json > bench.csv (--help)", file=sys.stderr)
+    sys.exit(2)
+try:
+    with open(sys.argv[1], encoding="utf-8") as f:
+        run = json.load(f)
+except (OSError, ValueError) as e:
+    print(f"bench-csv.py: {sys.argv[1]}: {getattr(e, 'strerror', None) or e}", file=sys.stderr)
+    sys.exit(2)
 out = csv.writer(sys.stdout)
 out.writerow(["name", "mode_or_table", "scene", "kernel", "threads", "screen", "distance", "statistic",
               "ms_per_frame", "mpixel_per_s", "iterations", "error"])

@@ -4,6 +4,8 @@
 # Writes OUTDIR/bench.json (google-benchmark's raw JSON), OUTDIR/BENCH.md, CHARTS.gp (the
 # charts' data and plots) and OUTDIR/bench-{speedup,resolution,distance}.svg (and .png).
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 3 - "$@"
 bin=$1
 out=$2
 charts=$3

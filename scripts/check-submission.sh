@@ -6,6 +6,8 @@
 # image, player). Ends by saying where the file goes.
 # usage: check-submission.sh RENDER.c SHARED
 set -u
+. "$(dirname "$0")/usage.sh"
+script_args 2 2 "$@"
 src=$1
 shared=$2
 cc=${CC:-cc}

@@ -194,7 +194,8 @@ def main(argv):
         for label, names in zip(("changed", "new", "gone", "same", "built otherwise"), r):
             print(f"{label}: {len(names)}" + ("".join(f"\n  {n}" for n in names) if label != "same" else ""))
         return 0
-    print(__doc__, file=sys.stderr)
+    print("code_digest.py: usage: code_digest.py write BUILD OUT [COMMENT] | diff DIGEST BUILD (--help)",
+          file=sys.stderr)
     return 2
 
 

@@ -7,6 +7,8 @@
 # every variant costs a fresh context, and the threaded ones load the hwloc topology each).
 # usage: compare-frames.sh BASE [POSES [naive]]   e.g. compare-frames.sh /tmp/base-ba5e92b 200
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 1 3 "$@"
 base=$1 poses=${2:-200} which=${3:-all}
 shared=${RETRO_SHARED:-../shared}
 tmp=$(mktemp -d)

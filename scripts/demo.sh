@@ -4,6 +4,8 @@
 # OUT/NAME-plain.png, and the islands fly-through to OUT/fly/.
 # usage: demo.sh RETRO OUT
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 2 2 "$@"
 retro=$1
 out=$2
 mkdir -p "$out/fly"

@@ -1,6 +1,9 @@
 #!/bin/sh
 # Installs the Debian packages the suite needs, only those missing, as root or through sudo.
+# usage: install-deps.sh   (make deps)
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 0 0 "$@"
 # libclang-rt-dev (libFuzzer, clang's sanitizers) and libomp-dev (clang's OpenMP) are only
 # recommended by clang: make fuzz and the clang half of make asan need them.
 # python3 writes the README's figures from the committed run; help2man the man page; git

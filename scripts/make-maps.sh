@@ -2,6 +2,9 @@
 # Generates the maps the suite uses, skipping those newer than the generator.
 # usage: make-maps.sh RETRO [test]   (test: only the small analytic maps the tests need)
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 1 2 "$@"
+case ${2:-all} in all | test) ;; *) echo "make-maps.sh: unknown set '$2' (all or test)" >&2; exit 2 ;; esac
 retro=$1
 only=${2:-all}
 gen() { # NAME STYLE SIZE SEED [GENMAP OPTIONS...]

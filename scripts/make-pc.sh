@@ -5,6 +5,8 @@
 # (pkg-config --static) adds the packages (Requires.private) and OpenMP and libm
 # (Libs.private).
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 4 4 "$@"
 cat <<PC
 prefix=$1
 libdir=\${prefix}/lib

@@ -3,6 +3,8 @@
 # drift from what `make verify` checks: the same frame setup, strips and threaded kernel.
 # usage: make-submission.sh OUT.c
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 1 1 "$@"
 out=$1
 tmp="$out.tmp.$$"
 trap 'rm -f "$tmp"' EXIT

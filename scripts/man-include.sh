@@ -3,6 +3,8 @@
 # section with every subcommand's own --help, so the page documents every option.
 # usage: man-include.sh RETRO > retro.h2m
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 1 1 "$@"
 retro=$1
 cat scripts/retro.h2m
 printf '\n[COMMANDS]\n'

@@ -7,6 +7,9 @@
 # --accuracy (make publish-accuracy) copies the accuracy run alone, for a machine that gives a
 # steady make accuracy but no steady make bench: the benchmark's figures stay as they are.
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 3 4 "$@"
+case ${4:---accuracy} in --accuracy) ;; *) echo "publish.sh: unknown option '$4' (--help)" >&2; exit 2 ;; esac
 runs=$1
 dest=$2
 readme=$3

@@ -543,11 +543,20 @@ def replace(readme, blocks):
 
 
 def main(argv):
+    if argv[1:2] in (["-h"], ["--help"]):
+        print(__doc__)
+        return 0
     check = argv[1:2] == ["--check"]
     args = argv[2:] if check else argv[1:]
-    if len(args) != 2:
-        sys.exit(__doc__)
+    if len(args) != 2 or any(a.startswith("-") for a in args):
+        print("readme-figures.py: usage: readme-figures.py [--check] RESULTS_DIR README.md (--help)", file=sys.stderr)
+        return 2
     results, path = args
+    import os
+    for f in (f"{results}/BENCH.md", f"{results}/ACCURACY.md", path):
+        if not os.path.isfile(f):
+            print(f"readme-figures.py: {f}: no such file", file=sys.stderr)
+            return 2
     import os
     import json
     raw = os.path.exists(f"{results}/bench.json")

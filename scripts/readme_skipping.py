@@ -5,6 +5,11 @@ submission's spread across runs. Each returns None when its run lacks the data, 
 before the measurement existed leaves the README's block as it is."""
 import os
 import re
+import sys
+
+if __name__ == "__main__":
+    sys.exit("readme_skipping.py is a module of readme-figures.py, not a program: "
+             "python3 scripts/readme-figures.py --help")
 
 
 def verdict(ok):

@@ -2,6 +2,8 @@
 # Runs every test program and ends with one line "N passed, N failed".
 # usage: run-tests.sh RETRO CRITERION_BINARY...
 set -u
+. "$(dirname "$0")/usage.sh"
+script_args 1 - "$@"
 retro=$1
 shift
 passed=0

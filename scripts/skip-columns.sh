@@ -7,6 +7,8 @@
 # Writes OUTDIR/skip-columns.csv (retro render --columns), OUTDIR/skip-columns.txt (the frame and
 # its --stats totals) and OUTDIR/skip-columns.svg (and .png where gnuplot has a png terminal).
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 2 2 "$@"
 retro=$1
 out=$2
 scene=alpine

@@ -1,8 +1,11 @@
 #!/bin/sh
 # Photographs retro view's window, overlay included, under a private Xvfb: results/view.png
-# (the README's picture). usage: scripts/view-screenshot.sh RETRO [OUT.png]
-# Flies forward for a moment first, so the overlay's median covers 30 rendered frames.
+# (the README's picture). Flies forward for a moment first, so the overlay's median covers 30
+# rendered frames.
+# usage: view-screenshot.sh RETRO [OUT.png]
 set -eu
+. "$(dirname "$0")/usage.sh"
+script_args 1 2 "$@"
 retro=$1
 out=${2:-results/view.png}
 . scripts/xvfb.sh
