@@ -84,5 +84,21 @@ for f in voxel mesh diff; do
 done
 expect_bad "unknown render mode" render $map -m approximate -o "$tmp/out.png"
 expect_bad "bad lod" render $map -m lod --lod -1 -o "$tmp/out.png"
+# An option given last without a value: an unknown one is called unknown (it was once said to
+# need a value), a known one is said to need one.
+for c in render fly view genmap accuracy; do
+  pos=$map
+  [ $c = accuracy ] && pos="--seed 1" # it takes no MAP
+  expect_bad "retro $c with an unknown option last" $c $pos --no-such-option
+  grep -q "unknown option '--no-such-option'" "$tmp/err" ||
+    { echo "FAIL: retro $c: an unknown option given last: $(cat "$tmp/err")"; fails=$((fails + 1)); }
+done
+for c in "render -s" "render --columns" "fly --frames" "view --keys" "genmap --size" "accuracy --poses"; do
+  pos=$map
+  [ "${c% *}" = accuracy ] && pos="--seed 1"
+  expect_bad "retro $c without its value" ${c% *} $pos ${c#* }
+  grep -q "option ${c#* } needs a value" "$tmp/err" ||
+    { echo "FAIL: retro $c without its value: $(cat "$tmp/err")"; fails=$((fails + 1)); }
+done
 echo "cli: $fails failures"
 [ "$fails" -eq 0 ]

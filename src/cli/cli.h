@@ -28,6 +28,10 @@ int cli_words(const char *s, char *buf, size_t size, char **words, int max);
 /* Takes the value of option argv[*i] (advancing *i), or NULL when it is missing. */
 const char *cli_value(int argc, char **argv, int *i);
 
+/* Whether a is one of names (a NULL-ended list): so that an unknown option given last is
+ * called unknown, not one missing its value. */
+int cli_one_of(const char *a, const char *const *names);
+
 int cmd_render(int argc, char **argv);
 int cmd_kernels(int argc, char **argv);
 int cmd_genmap(int argc, char **argv);

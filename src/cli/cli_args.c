@@ -111,6 +111,14 @@ int cli_rgb(const char *s, uint32_t *rgb)
     return 0;
 }
 
+int cli_one_of(const char *a, const char *const *names)
+{
+    for (; *names; names++)
+        if (!strcmp(a, *names))
+            return 1;
+    return 0;
+}
+
 const char *cli_value(int argc, char **argv, int *i)
 {
     if (*i + 1 >= argc)

@@ -138,12 +138,12 @@ static int fly_extra(void *user, const char *a, const char *v)
 {
     fly_args *f = user;
     if (!strcmp(a, "-o")) {
-        f->out = v;
+        f->out = v ? v : f->out;
         return 1;
     }
     if (strcmp(a, "--frames"))
         return 0;
-    if (cli_int(v, 1, MAX_FRAMES, &f->frames))
+    if (v && cli_int(v, 1, MAX_FRAMES, &f->frames))
         return cli_error("fly", "bad frame count '%s' (1..%d)", v, MAX_FRAMES);
     return 1;
 }

@@ -83,9 +83,9 @@ static int render_extra(void *user, const char *a, const char *v)
 {
     render_outputs *o = user;
     if (!strcmp(a, "-o"))
-        o->image = v;
+        o->image = v ? v : o->image;
     else if (!strcmp(a, "--columns"))
-        o->columns = v;
+        o->columns = v ? v : o->columns;
     else
         return 0;
     return 1;

@@ -44,11 +44,11 @@ static int view_extra(void *user, const char *a, const char *v)
 {
     view_args *va = user;
     if (!strcmp(a, "--keys"))
-        va->keys = v;
+        va->keys = v ? v : va->keys;
     else if (!strcmp(a, "--screenshot"))
-        va->shot = v;
+        va->shot = v ? v : va->shot;
     else if (!strcmp(a, "--save-dir"))
-        va->save_dir = v;
+        va->save_dir = v ? v : va->save_dir;
     else
         return 0;
     return 1;

@@ -21,6 +21,9 @@ int is_scene_file(const char *map)
     return n > 6 && !strcmp(map + n - 6, ".scene");
 }
 
+const char *const render_opt_names[] = {"-k", "-m", "-s", "-d", "-p", "-z", "-a", "--sky",
+                                        "--isa", "--lod", "--threads", NULL};
+
 int render_opt(const char *cmd, render_opts *o, const char *a, const char *v)
 {
     if (!strcmp(a, "-k"))
@@ -92,7 +95,9 @@ int render_args(const char *cmd, const char *what, int argc, char **argv, render
             continue;
         }
         if (!(v = cli_value(argc, argv, &i)))
-            return cli_error(cmd, "option %s needs a value (retro %s --help)", a, cmd);
+            return cli_error(cmd, cli_one_of(a, render_opt_names) || extra(user, a, NULL)
+                                      ? "option %s needs a value (retro %s --help)"
+                                      : "unknown option '%s' (retro %s --help)", a, cmd);
         int r = render_opt(cmd, o, a, v);
         if (r == 0)
             r = extra(user, a, v);

@@ -27,9 +27,13 @@ void render_opts_init(render_opts *o);
 /* Parses option a with value v when it is one of the shared options. Returns 1 if it was, 0 if
  * a is not a shared option, CLI_EBADINPUT after printing the error for a bad value. */
 int render_opt(const char *cmd, render_opts *o, const char *a, const char *v);
+/* The shared options render_opt takes, NULL-ended. */
+extern const char *const render_opt_names[];
 /* Parses argv[1..] of `retro CMD` into o: one positional (`what`, MAP or SCENE), the shared
  * options, and the command's own through extra(user, option, value), which returns 1 when it
- * took the option, 0 when it does not know it, CLI_EBADINPUT after printing a bad value.
+ * took the option, 0 when it does not know it, CLI_EBADINPUT after printing a bad value; with
+ * value NULL (given last, without one) it only says whether the option is its own, 1 or 0,
+ * and changes nothing.
  * Returns 0; 1 after --help (printed by help); CLI_EBADINPUT after printing the error. */
 int render_args(const char *cmd, const char *what, int argc, char **argv, render_opts *o,
                 int (*extra)(void *user, const char *a, const char *v), void *user, void (*help)(void));
