@@ -193,6 +193,7 @@ for bad in "jump" "w*0" "w*" "w,,a" "w*3x" "*4" "w*9999999" ""; do
   expect_bad "key script '$bad'" "key" "$retro" view "$tmp/isl.scene" --keys "$bad" --screenshot "$tmp/out.png"
 done
 expect_bad "no display" "no display" -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$retro" view "$tmp/isl.scene"
+expect_bad "empty DISPLAY" "no display" -u SDL_VIDEODRIVER DISPLAY= WAYLAND_DISPLAY= "$retro" view "$tmp/isl.scene"
 expect_bad "dummy video driver" "no display" SDL_VIDEODRIVER=dummy "$retro" view "$tmp/isl.scene"
 expect_bad "offscreen video driver" "no display" SDL_VIDEODRIVER=offscreen "$retro" view "$tmp/isl.scene"
 expect_bad "screenshot without keys" "--keys" "$retro" view "$tmp/isl.scene" --screenshot "$tmp/out.png"

@@ -164,7 +164,8 @@ static const char *no_display(void)
     const char *drv = getenv("SDL_VIDEODRIVER");
     if (drv && (!strcmp(drv, "dummy") || !strcmp(drv, "offscreen")))
         return drv;
-    if (!drv && !getenv("DISPLAY") && !getenv("WAYLAND_DISPLAY"))
+    const char *x = getenv("DISPLAY"), *wl = getenv("WAYLAND_DISPLAY");
+    if (!drv && (!x || !*x) && (!wl || !*wl)) /* DISPLAY= (empty) names no display either */
         return "neither DISPLAY nor WAYLAND_DISPLAY is set";
     return NULL;
 }
