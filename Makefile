@@ -222,7 +222,7 @@ FUZZ_BUILD   ?= $(BUILD)/fuzz
 FUZZ_TIME    ?= 60
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
-FUZZ_LIBS    := $(FUZZ_BUILD)/src/cli/cli_args.o $(FUZZ_BUILD)/libretro.a
+FUZZ_LIBS    := $(FUZZ_BUILD)/src/cli/cli_args.o $(FUZZ_BUILD)/src/cli/view_keys.o $(FUZZ_BUILD)/libretro.a
 
 .PHONY: fuzz fuzz-build
 fuzz-build: ## build the libFuzzer targets into FUZZ_BUILD/bin (needs clang and libclang-rt-dev)

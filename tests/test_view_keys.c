@@ -36,13 +36,15 @@ Test(view_keys, every_name_of_the_help_parses)
 Test(view_keys, bad_scripts_are_refused_with_a_reason)
 {
     const char *bad[] = {"", ",", "w,", ",w", "w*0", "w*", "w*1x", "w**2", "W", "jump", "w*-1",
-                         "w* 2", " w", "w*1000001", "w*600000,a*600000", "tab*", "s*99999999"};
+                         "w* 2", " w", "w*1000001", "w*600000,a*600000", "tab*", "s*99999999",
+                         "w\n*3", "a,w*9\ny"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         view_script s = {NULL, 0};
         err[0] = 0;
         cr_assert_eq(view_script_parse(bad[i], &s, err, sizeof err), -1, "'%s' accepted", bad[i]);
         cr_assert_null(s.frames, "'%s'", bad[i]);
         cr_assert(strstr(err, "key script"), "'%s': %s", bad[i], err);
+        cr_assert_null(strchr(err, '\n'), "'%s': the reason is more than one line", bad[i]);
     }
 }
 

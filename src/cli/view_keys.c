@@ -123,6 +123,10 @@ int view_script_parse(const char *s, view_script *out, char *err, size_t errlen)
         p = end + 1;
     }
 fail:
+    /* one line, though the quoted key may hold a newline or another control byte */
+    for (char *c = err; errlen && *c; c++)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f)
+            *c = '?';
     view_script_free(out);
     return -1;
 }

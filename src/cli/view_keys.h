@@ -42,7 +42,8 @@ typedef struct view_script {
 } view_script;
 #define VIEW_SCRIPT_MAX_FRAMES 1000000
 /* Parses "w*30,a*10,tab,q*5": comma-separated key names, each optionally repeated *N times
- * (N from 1). Returns 0, or -1 with a one-line reason in err; frees nothing on failure. */
+ * (N from 1). Returns 0, or -1 with a one-line reason in err and *out left empty (nothing to
+ * free). tests/fuzz/fuzz_keys.c checks it against the grammar. */
 int view_script_parse(const char *s, view_script *out, char *err, size_t errlen);
 void view_script_free(view_script *s);
 
