@@ -251,7 +251,8 @@ fuzz: fuzz-build ## run every fuzz target for FUZZ_TIME seconds (default 60) fro
 BENCH_BIN  := $(BIN)/retro-bench
 BENCH_PKGS := benchmark hwloc
 BENCH_OBJ  := $(patsubst %,$(BUILD)/%.o,$(basename $(wildcard bench/*.c bench/*.cc))) $(PEER_SRC:%.c=$(BUILD)/%.o) \
-              $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o
+              $(BUILD)/bench/submission.o $(BUILD)/bench/ybuffer_noeffects.o \
+              $(BUILD)/src/cli/cli_args.o # the CLI's strict number parsers (fuzz_cli checks them)
 SUBMISSION_SRC := $(shell find src include -name '*.[ch]' -not -path 'src/cli/*') scripts/make-submission.sh
 QUICK      ?=
 BENCH_ARGS ?=

@@ -6,6 +6,22 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "retro.h"
+#include "retro_scene.h"
+extern "C" {
+#include "cli.h" // the retro CLI's strict parsers, so both programs refuse the same values
+}
+
+// An int option's value: the whole string a number in [lo, hi] (cli_int's grammar).
+static bool int_value(const std::string &v, long lo, long hi, int *out)
+{
+    long x;
+    if (cli_int(v.c_str(), lo, hi, &x))
+        return false;
+    *out = static_cast<int>(x);
+    return true;
+}
+
 void options_usage()
 {
     std::printf(
@@ -18,8 +34,9 @@ void options_usage()
         "  --charts=FILE   write the run's charts as a gnuplot script\n"
         "  --scene=PREFIX  only this map, at its default view (e.g. maps/test/flat-64); no extras\n"
         "  --no-extras     leave out the course-submission and effect-cost tables\n"
-        "  --size=WxH      screen of the kernel-by-scene cases (default 640x480)\n"
-        "  --distance=D    distance of the kernel-by-scene cases (default 800)\n"
+        "  --size=WxH      screen of the kernel-by-scene cases (default 640x480; each side\n"
+        "                  1..16384, at most 2^26 pixels, as retro render takes)\n"
+        "  --distance=D    distance of the kernel-by-scene cases (default 800; 1..4194304)\n"
         "  --modes=LIST    only these modes, e.g. exact,course (default: every mode)\n"
         "  --no-skip       time every mode exact case also with occlusion skipping off\n"
         "                  (docs/SKIPPING.md), as a twin named .../noskip\n"
@@ -120,7 +137,6 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
     std::string modes;
     for (int i = 1; i < n; i++) {
         std::string a = args[i], v;
-        char junk;
         bool ok = option(a, "--report=", &o->report_dir) || option(a, "--charts=", &o->charts) ||
                   option(a, "--scene=", &o->scene) || option(a, "--modes=", &modes);
         if (a == "--quick")
@@ -129,18 +145,20 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
             ok = o->no_extras = true;
         else if (a == "--no-skip")
             ok = plan->no_skip_twins = true;
-        else if (!ok && option(a, "--size=", &v))
-            ok = std::sscanf(v.c_str(), "%dx%d", &plan->W, &plan->H) == 2 && plan->W > 0 &&
-                 plan->H > 0;
+        else if (!ok && option(a, "--size=", &v)) // the limits retro render takes
+            ok = !cli_size(v.c_str(), &plan->W, &plan->H) && plan->W <= RETRO_MAX_SCREEN &&
+                 plan->H <= RETRO_MAX_SCREEN && static_cast<long>(plan->W) * plan->H <= RETRO_MAX_PIXELS;
         else if (!ok && option(a, "--distance=", &v))
-            ok = std::sscanf(v.c_str(), "%d", &plan->D) == 1;
+            ok = int_value(v, RETRO_MIN_DISTANCE, RETRO_MAX_DISTANCE, &plan->D);
         else if (!ok && option(a, "--retime=", &v))
-            ok = std::sscanf(v.c_str(), "%d%c", &o->retime, &junk) == 1 && o->retime >= 0;
+            ok = int_value(v, 0, 1000, &o->retime);
         else if (!ok && option(a, "--retime-block=", &v))
-            ok = std::sscanf(v.c_str(), "%d%c", &o->retime_block, &junk) == 1 && o->retime_block >= 0;
-        else if (!ok && option(a, "--quiet-wait=", &v))
-            ok = std::sscanf(v.c_str(), "%lf%c", &o->quiet_wait, &junk) == 1 && o->quiet_wait >= 0 &&
-                 o->quiet_wait <= 86400;
+            ok = int_value(v, 0, 1000000, &o->retime_block);
+        else if (!ok && option(a, "--quiet-wait=", &v)) {
+            float w;
+            ok = !cli_float(v.c_str(), &w) && w >= 0 && w <= 86400;
+            o->quiet_wait = w;
+        }
         if (!ok) {
             std::fprintf(stderr, "retro-bench: unknown or bad argument '%s' (--help)\n", args[i]);
             return false;

@@ -219,5 +219,17 @@ check "$tmp/mesh/BENCH.md" '^| flat-64 | `mesh-zbuffer` | [0-9.]* | [1-9][0-9]* 
   "no mesh row with counts and a ratio to the voxel kernel in BENCH.md"
 python3 scripts/bench-csv.py "$tmp/mesh/bench.json" >"$tmp/mesh/bench.csv" 2>&1
 check "$tmp/mesh/bench.csv" "^$mcase[^,]*,binary32,flat-64,mesh-zbuffer,1,32x24,200," "make bench-csv's converter lost the mesh case"
+# Bad values of retro-bench's own options: status 2, one line, no report written. These once
+# ran (a distance of -5 or 0, trailing junk) or aborted on an allocation (a huge screen).
+for bad in --distance=-5 --distance=0 --distance=800abc --size=640x480junk --size=100000x100000 \
+  --size=0x5 --retime=99999999999 --retime=-1 --quiet-wait=nan --quiet-wait=1e9 --modes=fast; do
+  rm -rf "$tmp/bad"
+  "$bench" "$bad" --scene=maps/test/flat-64 --report="$tmp/bad" >"$tmp/bad.out" 2>"$tmp/bad.err"
+  rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(wc -l <"$tmp/bad.err")" -ne 1 ] || [ -e "$tmp/bad" ]; then
+    echo "FAIL: retro-bench $bad: want status 2, one line and no report; got $rc: $(cat "$tmp/bad.err")"
+    fail=1
+  fi
+done
 [ "$fail" = 0 ] && echo "ok: retro-bench timed $case and $mcase"
 exit "$fail"
