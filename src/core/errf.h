@@ -1,5 +1,5 @@
-/* One way for the library's parsers and file code to report an error: a message formatted into
- * the caller's buffer (which may be NULL or empty), and -1 to return. */
+/* One way for the library's parsers and file code to report an error: a one-line message
+ * formatted into the caller's buffer (which may be NULL or empty), and -1 to return. */
 #ifndef RETRO_ERRF_H
 #define RETRO_ERRF_H
 

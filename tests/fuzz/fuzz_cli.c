@@ -9,6 +9,9 @@
  *   cli_rgb    [#] and exactly six hex digits -> RRGGBB << 8
  *   cli_words  the runs of characters other than space and tab, in order (retro render
  *              --versus ARGS); none, too many or a buffer too small: an error
+ *   retro_env_long  (the environment's integers, src/core/env.c) [-]digits, at most 18, in
+ *              [lo, hi]; set but empty or malformed: -1 with a one-line reason
+ *   OMP_NUM_THREADS  (retro_env_check) counts 1..1048576 of 1 to 15 digits, split by commas
  * cli_float must accept every well-formed number strtof takes to a finite float: one that
  * underflows (ERANGE) to a subnormal or zero is valid too. Besides the input string, values
  * decoded from the input are printed in canonical form and must parse back exactly. */
@@ -22,6 +25,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "env.h"
 
 #define MAX_LEN 200
 
@@ -291,6 +295,65 @@ static void check_words(const char *s)
 }
 
 /* Canonical spellings of values taken from the input must parse back exactly. */
+/* A reason the library gave: set, one line, ended within its buffer. */
+static void one_line(const char *parser, const char *s, const char *err, size_t size)
+{
+    const char *end = memchr(err, 0, size);
+    if (!end || end == err || memchr(err, '\n', (size_t)(end - err)))
+        fail(parser, s, "no one-line reason for its refusal");
+}
+
+static void check_env_long(const char *s, long lo, long hi)
+{
+    const char *p = s + (*s == '-');
+    size_t digits = strspn(p, "0123456789");
+    int ok = digits >= 1 && digits <= 18 && !p[digits];
+    long want = ok ? strtol(s, NULL, 10) : 0;
+    ok = ok && want >= lo && want <= hi;
+    long got = 12345;
+    char err[128];
+    memset(err, 'x', sizeof err);
+    setenv("RETRO_FUZZ_VALUE", s, 1);
+    int r = retro_env_long("RETRO_FUZZ_VALUE", lo, hi, &got, err, sizeof err);
+    if (r != (ok ? 1 : -1))
+        fail("retro_env_long", s, ok ? "refused a well-formed integer in range" : "accepted a malformed or out-of-range value");
+    if (ok && got != want)
+        fail("retro_env_long", s, "returned the wrong value");
+    if (!ok && got != 12345)
+        fail("retro_env_long", s, "wrote its output on failure");
+    if (!ok)
+        one_line("retro_env_long", s, err, sizeof err);
+}
+
+static void check_omp_threads(const char *s)
+{
+    int ok = 1;
+    for (const char *p = s;; p++) {
+        size_t digits = strspn(p, "0123456789");
+        long v = digits >= 1 && digits <= 15 ? strtol(p, NULL, 10) : 0;
+        if (v < 1 || v > 1048576) {
+            ok = 0;
+            break;
+        }
+        p += digits;
+        if (!*p)
+            break;
+        if (*p != ',') {
+            ok = 0;
+            break;
+        }
+    }
+    char err[128];
+    memset(err, 'x', sizeof err);
+    setenv("OMP_NUM_THREADS", s, 1);
+    int r = retro_env_check(err, sizeof err);
+    unsetenv("OMP_NUM_THREADS");
+    if (r != (ok ? 0 : -1))
+        fail("OMP_NUM_THREADS", s, ok ? "refused a list of counts" : "accepted a malformed list");
+    if (!ok)
+        one_line("OMP_NUM_THREADS", s, err, sizeof err);
+}
+
 static void round_trips(const uint8_t *data, size_t size)
 {
     uint8_t b[12] = {0};
@@ -347,6 +410,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check_pair(s);
     check_rgb(s);
     check_words(s);
+    check_env_long(s, LONG_MIN, LONG_MAX);
+    check_env_long(s, 1, 64);
+    check_omp_threads(s);
     round_trips(data, size);
     return 0;
 }
