@@ -230,7 +230,7 @@ fuzz-build: ## build the libFuzzer targets into FUZZ_BUILD/bin (needs clang and 
 	  SAN="-fsanitize=fuzzer-no-link $(FUZZ_SAN)"
 	$(Q)$(MAKE) --no-print-directory $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/bin/%)
 
-$(FUZZ_BUILD)/bin/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIBS)
+$(FUZZ_BUILD)/bin/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_string.h $(FUZZ_LIBS)
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  FUZZ    $@")
 	$(Q)$(FUZZ_CC) -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(WARN) $(FPFLAGS) -fsanitize=fuzzer \

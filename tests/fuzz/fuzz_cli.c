@@ -26,6 +26,7 @@
 
 #include "cli.h"
 #include "env.h"
+#include "fuzz_string.h"
 
 #define MAX_LEN 200
 
@@ -295,11 +296,9 @@ static void check_words(const char *s)
 }
 
 /* Canonical spellings of values taken from the input must parse back exactly. */
-/* A reason the library gave: set, one line, ended within its buffer. */
 static void one_line(const char *parser, const char *s, const char *err, size_t size)
 {
-    const char *end = memchr(err, 0, size);
-    if (!end || end == err || memchr(err, '\n', (size_t)(end - err)))
+    if (!fuzz_one_line(err, size))
         fail(parser, s, "no one-line reason for its refusal");
 }
 
@@ -397,9 +396,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char s[MAX_LEN + 1];
-    size_t n = size < MAX_LEN ? size : MAX_LEN;
-    memcpy(s, data, n);
-    s[n] = 0; /* the string ends at the first NUL, as an argv entry would */
+    fuzz_string(data, size, s, MAX_LEN);
     static const long ranges[][2] = {{LONG_MIN, LONG_MAX}, {INT_MIN, INT_MAX}, {1, 64},
                                      {-2147483647L - 1, 1L << 22}, {1, 16384}, {-5, 5}};
     for (size_t i = 0; i < sizeof ranges / sizeof ranges[0]; i++)

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_string.h"
 #include "view_keys.h"
 
 #define MAX_LEN 4096
@@ -68,9 +69,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char s[MAX_LEN + 1];
-    size_t n = size < MAX_LEN ? size : MAX_LEN;
-    memcpy(s, data, n);
-    s[n] = 0; /* the string ends at the first NUL, as an argv entry would */
+    fuzz_string(data, size, s, MAX_LEN);
     const long want = expand(s, NULL);
     view_script got = {(view_action *)1, 12345}; /* the parser must set both, whatever it finds */
     char err[96];
@@ -93,8 +92,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fail(s, "refused a script of the grammar");
     if (got.frames || got.n)
         fail(s, "left frames behind after failing");
-    const char *end = memchr(err, 0, sizeof err);
-    if (!end || end == err || memchr(err, '\n', (size_t)(end - err)))
+    if (!fuzz_one_line(err, sizeof err))
         fail(s, "no one-line reason in the error buffer");
     return 0;
 }
