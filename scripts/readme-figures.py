@@ -557,7 +557,6 @@ def main(argv):
         if not os.path.isfile(f):
             print(f"readme-figures.py: {f}: no such file", file=sys.stderr)
             return 2
-    import os
     import json
     raw = os.path.exists(f"{results}/bench.json")
     blocks = bench_blocks(open(f"{results}/BENCH.md", encoding="utf-8").read(), raw,

@@ -28,9 +28,12 @@ int cli_words(const char *s, char *buf, size_t size, char **words, int max);
 /* Takes the value of option argv[*i] (advancing *i), or NULL when it is missing. */
 const char *cli_value(int argc, char **argv, int *i);
 
-/* Whether a is one of names (a NULL-ended list): so that an unknown option given last is
- * called unknown, not one missing its value. */
+/* Whether a is one of names (a NULL-ended list). */
 int cli_one_of(const char *a, const char *const *names);
+
+/* The error for option a given last, without a value: that it needs one when it is known to
+ * `retro CMD`, else that it is unknown (not one missing its value). Returns CLI_EBADINPUT. */
+int cli_no_value(const char *cmd, const char *a, int known);
 
 int cmd_render(int argc, char **argv);
 int cmd_kernels(int argc, char **argv);

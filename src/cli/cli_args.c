@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "errf.h"
 
 int cli_error(const char *cmd, const char *fmt, ...)
 {
@@ -16,11 +17,7 @@ int cli_error(const char *cmd, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    /* One line whatever a quoted value holds: control bytes (a newline in a file name or an
-     * environment value) are shown as '?'. */
-    for (char *p = msg; *p; p++)
-        if ((unsigned char)*p < 0x20 || *p == 0x7f)
-            *p = '?';
+    retro_one_line(msg);
     fprintf(stderr, "retro %s: %s\n", cmd, msg);
     return CLI_EBADINPUT;
 }
@@ -117,6 +114,12 @@ int cli_one_of(const char *a, const char *const *names)
         if (!strcmp(a, *names))
             return 1;
     return 0;
+}
+
+int cli_no_value(const char *cmd, const char *a, int known)
+{
+    return known ? cli_error(cmd, "option %s needs a value (retro %s --help)", a, cmd)
+                 : cli_error(cmd, "unknown option '%s' (retro %s --help)", a, cmd);
 }
 
 const char *cli_value(int argc, char **argv, int *i)

@@ -111,8 +111,7 @@ int cmd_accuracy(int argc, char **argv)
         }
         static const char *const names[] = {"--poses", "--mesh-poses", "--seed", "-o", "--chart", "--maps", NULL};
         if (!(val = cli_value(argc, argv, &i)))
-            return cli_error("accuracy", cli_one_of(a, names) ? "option %s needs a value (retro accuracy --help)"
-                                                              : "unknown option '%s' (retro accuracy --help)", a);
+            return cli_no_value("accuracy", a, cli_one_of(a, names));
         if (!strcmp(a, "--poses")) {
             if (cli_int(val, 1, MAX_POSES, &poses))
                 return cli_error("accuracy", "bad pose count '%s' (1..%d)", val, MAX_POSES);

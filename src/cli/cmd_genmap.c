@@ -47,8 +47,7 @@ int cmd_genmap(int argc, char **argv)
         }
         static const char *const names[] = {"--size", "--seed", "--height-offset", "-o", NULL};
         if (!(v = cli_value(argc, argv, &i)))
-            return cli_error("genmap", cli_one_of(a, names) ? "option %s needs a value (retro genmap --help)"
-                                                            : "unknown option '%s' (retro genmap --help)", a);
+            return cli_no_value("genmap", a, cli_one_of(a, names));
         if (!strcmp(a, "--size")) {
             if (cli_int(v, 1, RETRO_MAX_MAP, &size))
                 return cli_error("genmap", "bad size '%s' (1..%d)", v, RETRO_MAX_MAP);

@@ -95,9 +95,7 @@ int render_args(const char *cmd, const char *what, int argc, char **argv, render
             continue;
         }
         if (!(v = cli_value(argc, argv, &i)))
-            return cli_error(cmd, cli_one_of(a, render_opt_names) || extra(user, a, NULL)
-                                      ? "option %s needs a value (retro %s --help)"
-                                      : "unknown option '%s' (retro %s --help)", a, cmd);
+            return cli_no_value(cmd, a, cli_one_of(a, render_opt_names) || extra(user, a, NULL));
         int r = render_opt(cmd, o, a, v);
         if (r == 0)
             r = extra(user, a, v);

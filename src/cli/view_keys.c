@@ -1,5 +1,6 @@
 /* retro view's key names, script parser and movement: no SDL here, so tests link it alone. */
 #include "view_keys.h"
+#include "errf.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,10 +124,8 @@ int view_script_parse(const char *s, view_script *out, char *err, size_t errlen)
         p = end + 1;
     }
 fail:
-    /* one line, though the quoted key may hold a newline or another control byte */
-    for (char *c = err; errlen && *c; c++)
-        if ((unsigned char)*c < 0x20 || *c == 0x7f)
-            *c = '?';
+    if (errlen) /* the quoted key may hold a newline */
+        retro_one_line(err);
     view_script_free(out);
     return -1;
 }

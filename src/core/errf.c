@@ -9,12 +9,15 @@ int retro_errf(char *err, size_t n, const char *fmt, ...)
     va_start(ap, fmt);
     if (err && n) {
         vsnprintf(err, n, fmt, ap);
-        /* One line whatever a quoted value holds (a newline in a path, a file's bytes, an
-         * environment value): control bytes are shown as '?', as the CLI's errors are. */
-        for (char *c = err; *c; c++)
-            if ((unsigned char)*c < 0x20 || *c == 0x7f)
-                *c = '?';
+        retro_one_line(err);
     }
     va_end(ap);
     return -1;
+}
+
+void retro_one_line(char *msg)
+{
+    for (; *msg; msg++)
+        if ((unsigned char)*msg < 0x20 || *msg == 0x7f)
+            *msg = '?';
 }

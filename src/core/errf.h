@@ -7,4 +7,8 @@
 
 int retro_errf(char *err, size_t n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
+/* Keeps a message to one line whatever a quoted value holds (a newline in a path, a file's
+ * bytes, an environment value): its control bytes become '?'. */
+void retro_one_line(char *msg);
+
 #endif
