@@ -227,8 +227,8 @@ SIMD_NAME(sample)(const retro_frame *f, const retro_simd_frame *sf, const SIMD_N
         const simd_i32 byte = v_set1_i(0xff);
         simd_i32 q = v_gather_cells(sf->quads, SIMD_NAME(tiled)(k, i0, j0));
         h00 = v_cvt_f(v_and_i(q, byte));
-        h10 = v_cvt_f(v_and_i(v_srli_i(q, 8), byte));
-        h01 = v_cvt_f(v_and_i(v_srli_i(q, 16), byte));
+        h10 = v_cvt_f(v_byte_i(q, 1));
+        h01 = v_cvt_f(v_byte_i(q, 2));
         h11 = v_cvt_f(v_srli_i(q, 24));
         s->at[0] = i0;
         s->at[1] = i1;
@@ -276,7 +276,6 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(colours)(const retro_frame *f, const retro_
     if (!bilinear)
         return packed ? v_and_i(s->at[0], v_set1_i((int)RETRO_SIMD_COLOR_MASK))
                       : v_gather_colours(f->color_map, s->at[0], m);
-    const simd_i32 byte = v_set1_i(0xff);
     simd_i32 c[4];
     if (packed && sf->quads) { /* at holds i0, i1, j0, j1; the shifts drop a cell's height byte */
         c[0] = v_gather_colours(sf->cells, SIMD_NAME(tiled)(k, s->at[0], s->at[2]), m);
@@ -286,7 +285,9 @@ RETRO_SIMD_INLINE simd_i32 SIMD_NAME(colours)(const retro_frame *f, const retro_
     } else
         for (int i = 0; i < 4; i++) /* a packed cell's low byte is its height: the shifts drop it */
             c[i] = packed ? s->at[i] : v_gather_colours(f->color_map, s->at[i], m);
-#define SIMD_BYTE(x, sh) v_and_i(v_srli_i(x, sh), byte)
+/* byte 3 by a shift alone; the others by one byte shuffle where the ISA has one (v_byte_i), not
+ * a shift and a mask: a painting step extracts twelve of them */
+#define SIMD_BYTE(x, sh) ((sh) == 24 ? v_srli_i(x, 24) : v_byte_i(x, (sh) / 8))
     simd_i32 r = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 24), SIMD_BYTE(c[1], 24), SIMD_BYTE(c[2], 24),
                                            SIMD_BYTE(c[3], 24), s);
     simd_i32 g = SIMD_NAME(bilerp_channel)(SIMD_BYTE(c[0], 16), SIMD_BYTE(c[1], 16), SIMD_BYTE(c[2], 16),

@@ -25,6 +25,7 @@
  *   v_floor_i(q) v_cvtt_i(q)       floor and truncation to int32; v_cvt_f(i): int32 to float
  *   v_add_i v_sub_i v_mullo_i v_and_i v_or_i v_min_i v_max_i (a, b)   int32 lane operations
  *   v_srli_i(a, n) v_slli_i(a, n)  shifts by a constant; v_srl_i(a, n): by an int, every lane
+ *   v_byte_i(a, b)                 byte b (0..3, a constant) of each lane, as an int32 0..255
  *   v_flt v_fle v_fgt v_fge (a, b) float compares, v_igt(a, b) int32 compare: masks
  *   v_mand(a, b) v_mandnot(a, b)   a & b, ~a & b on masks
  *   v_add_where(m, a, b) v_sub_where(m, a, b)   a + b (a - b) in the lanes of m, a elsewhere
@@ -59,7 +60,8 @@
  * #undefs all of the above, leaving the next ISA file a clean slate. */
 
 #if !defined(SIMD_ISA) || !defined(SIMD_LANES) || !defined(SIMD_ROW_STORES) || !defined(simd_f32) ||           \
-    !defined(simd_i32) || !defined(simd_mask) || !defined(v_gather_cells) || !defined(V_SHIFT_UP)
+    !defined(simd_i32) || !defined(simd_mask) || !defined(v_gather_cells) || !defined(V_SHIFT_UP) ||           \
+    !defined(v_byte_i)
 #error "simd_strip_tpl.h: the including file defines SIMD_ISA, SIMD_LANES, the types and operations first"
 #endif
 
@@ -243,6 +245,7 @@ void RETRO_SIMD_CAT(retro_kernel_simd_, SIMD_ISA)(const void *frame, retro_ctx *
 #undef v_min_i
 #undef v_max_i
 #undef v_srli_i
+#undef v_byte_i
 #undef v_srl_i
 #undef v_slli_i
 #undef v_flt

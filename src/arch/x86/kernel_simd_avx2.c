@@ -86,6 +86,7 @@ static const uint32_t avx2_compress_lut[256] = {
 #define v_min_i(a, b) _mm256_min_epi32(a, b)
 #define v_max_i(a, b) _mm256_max_epi32(a, b)
 #define v_srli_i(a, n) _mm256_srli_epi32(a, n)
+#define v_byte_i(a, b) _mm256_shuffle_epi8(a, SIMD_NAME(byte_ctrl)(b))
 #define v_srl_i(a, n) _mm256_srl_epi32(a, _mm_cvtsi32_si128(n))
 #define v_slli_i(a, n) _mm256_slli_epi32(a, n)
 #define v_flt(a, b) AVX2_FM(_mm256_cmp_ps(a, b, _CMP_LT_OQ))
@@ -130,6 +131,15 @@ static const uint32_t avx2_compress_lut[256] = {
 #define v_mullo_16(a, b) _mm256_mullo_epi16(a, b)
 #define v_add_16(a, b) _mm256_add_epi16(a, b)
 #define v_srli_16(a, n) _mm256_srli_epi16(a, n)
+
+/* vpshufb's control that moves byte b of every 32-bit lane to its lowest byte and clears the
+ * others: it indexes bytes within each 128-bit lane, so word w of a lane takes byte 4w + b. */
+RETRO_SIMD_INLINE __m256i SIMD_NAME(byte_ctrl)(int b)
+{
+    const int z = (int)0x80808000u;
+    return _mm256_setr_epi32(z | b, z | (4 + b), z | (8 + b), z | (12 + b), z | b, z | (4 + b), z | (8 + b),
+                             z | (12 + b));
+}
 
 RETRO_SIMD_INLINE int SIMD_NAME(hmin)(__m256i a)
 {

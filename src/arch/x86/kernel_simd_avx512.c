@@ -42,6 +42,7 @@
 #define v_min_i(a, b) _mm512_min_epi32(a, b)
 #define v_max_i(a, b) _mm512_max_epi32(a, b)
 #define v_srli_i(a, n) _mm512_srli_epi32(a, n)
+#define v_byte_i(a, b) _mm512_shuffle_epi8(a, SIMD_NAME(byte_ctrl)(b))
 #define v_srl_i(a, n) _mm512_srl_epi32(a, _mm_cvtsi32_si128(n))
 #define v_slli_i(a, n) _mm512_slli_epi32(a, n)
 #define v_flt(a, b) _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ)
@@ -77,6 +78,14 @@
 #define v_mullo_16(a, b) _mm512_mullo_epi16(a, b)
 #define v_add_16(a, b) _mm512_add_epi16(a, b)
 #define v_srli_16(a, n) _mm512_srli_epi16(a, n)
+
+/* vpshufb's control that moves byte b of every 32-bit lane to its lowest byte and clears the
+ * others: it indexes bytes within each 128-bit lane, so word w of a lane takes byte 4w + b. */
+RETRO_SIMD_INLINE __m512i SIMD_NAME(byte_ctrl)(int b)
+{
+    const int z = (int)0x80808000u;
+    return _mm512_set4_epi32(z | (12 + b), z | (8 + b), z | (4 + b), z | b);
+}
 
 RETRO_SIMD_INLINE __mmask16 SIMD_NAME(first)(int n)
 {

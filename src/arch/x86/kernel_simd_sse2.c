@@ -44,6 +44,7 @@
 #define v_min_i(a, b) SIMD_NAME(min_epi32)(a, b)
 #define v_max_i(a, b) SIMD_NAME(max_epi32)(a, b)
 #define v_srli_i(a, n) _mm_srli_epi32(a, n)
+#define v_byte_i(a, b) _mm_and_si128(_mm_srli_epi32(a, 8 * (b)), _mm_set1_epi32(0xff))
 #define v_srl_i(a, n) _mm_srl_epi32(a, _mm_cvtsi32_si128(n))
 #define v_slli_i(a, n) _mm_slli_epi32(a, n)
 #define v_flt(a, b) SSE2_FM(_mm_cmplt_ps(a, b))
