@@ -67,6 +67,8 @@ COURSE_LIB := $(BUILD)/libretro-course.a
 RETRO    := $(BIN)/retro
 TESTS    := $(BIN)/retro-tests
 COUNT_TESTS := $(BIN)/retro-count-tests
+# The benchmark's own logic that needs no timing (tests/test_retime.cc: bench/retime.h's judgement).
+BENCH_TESTS := $(BIN)/retro-bench-tests
 # The course's update_player over a list of velocities: tests/view.sh checks retro view's poses.
 VIEW_POSE := $(BIN)/retro-view-pose
 
@@ -173,9 +175,9 @@ maps: $(RETRO) ## generate the default scenes and the analytic test maps under m
 	$(Q)sh scripts/make-maps.sh $(RETRO)
 
 check: deps ## run the tests (installs what is missing first)
-	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(VIEW_POSE) $(BENCH_BIN)
+	$(Q)$(MAKE) --no-print-directory $(RETRO) $(TESTS) $(COUNT_TESTS) $(BENCH_TESTS) $(VIEW_POSE) $(BENCH_BIN)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
-	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS)
+	$(Q)RETRO_SHARED=$(SHARED) sh scripts/run-tests.sh $(RETRO) $(TESTS) $(COUNT_TESTS) $(BENCH_TESTS)
 
 view: $(RETRO) ## fly through the islands scene in a window (retro view; keys in docs/VIEW.md)
 	$(Q)sh scripts/make-maps.sh $(RETRO)
@@ -284,6 +286,16 @@ $(BUILD)/bench/ybuffer_noeffects.o: src/voxel/kernel_ybuffer.c
 # The run's record names the compiler and flags the kernels were built with.
 $(BUILD)/bench/run_context.o: ALLCXXFLAGS += -DRETRO_BUILD_CC='"$(shell $(CC) --version | head -n 1)"' \
   -DRETRO_BUILD_CFLAGS='"$(strip $(CFLAGS) $(FPFLAGS) $(SAN))"'
+
+$(BUILD)/tests/%.o: tests/%.cc
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  CXX     $<")
+	$(Q)$(CXX) $(ALLCXXFLAGS) -Ibench -c $< -o $@
+
+$(BENCH_TESTS): $(BUILD)/tests/test_retime.o $(BUILD)/bench/retime.o
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CXX) $(SAN) -o $@ $^ $(TEST_LIBS)
 
 $(BENCH_BIN): $(BENCH_OBJ) $(COURSE_LIB) $(LIB)
 	@mkdir -p $(@D)

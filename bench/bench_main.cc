@@ -322,12 +322,18 @@ static bool wait_for_quiet(const BenchPlan &plan, const Retimer &r, double limit
     return quiet;
 }
 
-// Rounds of retime.h after the first pass, while the re-timing so far (waits included) and the
-// round's estimate (its share of the cases, of the first pass's duration) fit in the first
-// pass's duration: a machine slow for good would otherwise keep the run going for ever.
+// How long the re-timing may take, waits included, as a multiple of the first pass's duration:
+// a machine slow for good would otherwise keep the run going for ever. Each block waits for a
+// quiet machine of its own, so a machine slow half the time needs about twice a block's time
+// per block.
+constexpr double RETIME_BUDGET = 2.0;
+
+// Rounds of retime.h after the first pass, each timing its disturbed blocks one at a time after
+// a wait for a quiet machine, while the re-timing so far and the next block's estimate (its
+// share of the cases, of the first pass's duration) fit in RETIME_BUDGET first passes.
 static void retime(const BenchPlan &plan, Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
 {
-    const double first = progress->seconds();
+    const double first = progress->seconds(), budget = RETIME_BUDGET * first;
     for (int round = 1; round <= opt.retime; round++) {
         std::fprintf(stderr, "looking for disturbed blocks (round %d of %d):\n", round, opt.retime);
         std::vector<int> blocks = r->disturbed(round == 1 ? opt.retime_block : -1);
@@ -335,28 +341,36 @@ static void retime(const BenchPlan &plan, Retimer *r, ProgressReporter *progress
             std::fprintf(stderr, "  none\n");
             return;
         }
-        double left = first - (progress->seconds() - first) - r->share(blocks) * first;
-        if (left < 0) {
-            std::fprintf(stderr, "  left as they are: re-timing them would take longer than the first pass\n");
-            return;
-        }
-        if (opt.quiet_wait > 0) {
-            double waited;
-            const bool quiet = wait_for_quiet(plan, *r, std::min(opt.quiet_wait, left), &waited);
-            r->waited(waited, quiet);
-            if (!quiet) {
-                std::fprintf(stderr, "  left as they are: re-timing them now would be disturbed again\n");
+        r->begin_round();
+        for (size_t i = 0; i < blocks.size(); i++) {
+            const std::vector<int> one{blocks[i]};
+            const double left = budget - (progress->seconds() - first) - r->share(one) * first;
+            if (left < 0) {
+                std::fprintf(stderr, "  %zu left as they are: the re-timing has taken its %.0f s (%.0f× the first pass)\n",
+                             blocks.size() - i, budget, RETIME_BUDGET);
                 return;
             }
+            if (opt.quiet_wait > 0) {
+                double waited;
+                const bool quiet = wait_for_quiet(plan, *r, std::min(opt.quiet_wait, left), &waited);
+                r->waited(waited, quiet);
+                if (!quiet) {
+                    std::fprintf(stderr, "  %zu left as they are: re-timing them now would be disturbed again\n",
+                                 blocks.size() - i);
+                    return;
+                }
+            }
+            benchmark::ClearRegisteredBenchmarks();
+            std::vector<BenchCase *> cases = r->take(one);
+            for (BenchCase *c : cases) {
+                progress->forget(c);
+                register_case(c, quick);
+            }
+            std::fprintf(stderr, "re-timing %zu cases (block %d, %zu of %zu this round)\n", cases.size(), blocks[i],
+                         i + 1, blocks.size());
+            benchmark::RunSpecifiedBenchmarks(progress);
+            r->record(one);
         }
-        benchmark::ClearRegisteredBenchmarks();
-        std::vector<BenchCase *> cases = r->take(blocks);
-        for (BenchCase *c : cases) {
-            progress->forget(c);
-            register_case(c, quick);
-        }
-        std::fprintf(stderr, "re-timing %zu cases\n", cases.size());
-        benchmark::RunSpecifiedBenchmarks(progress);
     }
     if (opt.retime > 0) {
         std::fprintf(stderr, "looking for disturbed blocks (after the last round):\n");

@@ -9,35 +9,56 @@
 #include "busy.h"
 #include "steady.h"
 
+// Block k's checkpoints (k and k + 1) at every thread count, as timed now.
+void Retimer::capture(int block)
+{
+    std::vector<End> &e = ends_[block];
+    e.clear();
+    for (const auto &c : plan_->cases)
+        if ((c->groups & GROUP_STEADY) && (c->checkpoint == block || c->checkpoint == block + 1) &&
+            case_timed(c.get()))
+            e.push_back({c->checkpoint, c->threads, c->median_ms});
+}
+
 std::vector<int> Retimer::disturbed(int forced)
 {
+    int last = -1;
     for (const auto &c : plan_->cases)
-        if ((c->groups & GROUP_STEADY) && case_timed(c.get())) {
-            auto it = fastest_.find(c->threads);
-            if (it == fastest_.end() || c->median_ms < it->second)
-                fastest_[c->threads] = c->median_ms;
+        if (c->groups & GROUP_STEADY) {
+            last = std::max(last, c->checkpoint);
+            if (case_timed(c.get())) {
+                auto it = fastest_.find(c->threads);
+                if (it == fastest_.end() || c->median_ms < it->second)
+                    fastest_[c->threads] = c->median_ms;
+            }
+        }
+    for (int k = 0; k < last; k++) // the first look: every block by the first pass's checkpoints
+        if (!ends_.count(k))
+            capture(k);
+    for (const auto &[k, ends] : ends_) // timings a later re-timing has replaced count too
+        for (const End &e : ends) {
+            auto it = fastest_.find(e.threads);
+            if (it == fastest_.end() || e.ms < it->second)
+                fastest_[e.threads] = e.ms;
         }
     // Per block, why it is disturbed (the first reason found); blocks in order.
     std::map<int, std::string> why;
-    int block = -1, last = -1;
-    for (const auto &c : plan_->cases) {
-        char b[160];
-        if (c->groups & GROUP_STEADY) {
-            block = c->checkpoint;
-            last = std::max(last, block);
-            if (!case_timed(c.get()))
+    for (const auto &[k, ends] : ends_)
+        for (const End &e : ends) {
+            const double best = fastest_[e.threads];
+            if (e.ms <= best * (1 + NOISY_DRIFT) || why.count(k))
                 continue;
-            const double best = fastest_[c->threads];
-            if (c->median_ms <= best * (1 + NOISY_DRIFT))
-                continue;
+            char b[160];
             std::snprintf(b, sizeof b, "checkpoint %d at %d thread%s took %.3f ms, %.0f%% above the fastest %.3f ms",
-                          c->checkpoint, c->threads, c->threads == 1 ? "" : "s", c->median_ms,
-                          100 * (c->median_ms / best - 1), best);
-            // the checkpoint ends block - 1 and starts block
-            for (int k : {block - 1, block})
-                if (k >= 0 && !why.count(k))
-                    why[k] = b;
-        } else if (block >= 0 && case_timed(c.get()) && c->cv > NOISY_CV && !why.count(block)) {
+                          e.checkpoint, e.threads, e.threads == 1 ? "" : "s", e.ms, 100 * (e.ms / best - 1), best);
+            why[k] = b;
+        }
+    int block = -1;
+    for (const auto &c : plan_->cases) {
+        if (c->groups & GROUP_STEADY)
+            block = c->checkpoint;
+        else if (block >= 0 && block < last && case_timed(c.get()) && c->cv > NOISY_CV && !why.count(block)) {
+            char b[160];
             std::snprintf(b, sizeof b, "%s spread %.0f%% over its repetitions", c->name.c_str(), 100 * c->cv);
             why[block] = b;
         }
@@ -80,8 +101,17 @@ double Retimer::share(const std::vector<int> &blocks) const
     return ran ? static_cast<double>(cases_of(blocks).size()) / ran : 0;
 }
 
+void Retimer::begin_round()
+{
+    rounds_.emplace_back();
+    cases_.push_back(0);
+    waits_.push_back(0);
+}
+
 std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
 {
+    if (rounds_.empty())
+        begin_round();
     std::vector<BenchCase *> cases = cases_of(blocks);
     for (BenchCase *c : cases) {
         c->ran = false;
@@ -90,10 +120,17 @@ std::vector<BenchCase *> Retimer::take(const std::vector<int> &blocks)
         c->reps = 0;
         c->error.clear();
     }
-    rounds_.push_back(blocks);
-    cases_.push_back(static_cast<int>(cases.size()));
-    left_.clear();
+    rounds_.back().insert(rounds_.back().end(), blocks.begin(), blocks.end());
+    cases_.back() += static_cast<int>(cases.size());
+    for (int b : blocks)
+        left_.erase(std::remove(left_.begin(), left_.end(), b), left_.end());
     return cases;
+}
+
+void Retimer::record(const std::vector<int> &blocks)
+{
+    for (int b : blocks)
+        capture(b);
 }
 
 double Retimer::fastest(int threads) const
@@ -104,7 +141,9 @@ double Retimer::fastest(int threads) const
 
 void Retimer::waited(double seconds, bool quiet)
 {
-    waits_.push_back(seconds);
+    if (rounds_.empty())
+        begin_round();
+    waits_.back() += seconds;
     gave_up_ = !quiet;
 }
 
@@ -122,14 +161,15 @@ std::string Retimer::summary() const
                       cases_[r], r + 1);
         s += std::string(r == 0 ? "" : "; ") + b;
         if (r < waits_.size() && waits_[r] >= 1) {
-            std::snprintf(b, sizeof b, ", after waiting %.0f s for a quiet machine", waits_[r]);
+            std::snprintf(b, sizeof b, ", after waiting %.0f s in all for a quiet machine", waits_[r]);
             s += b;
         }
     }
     if (!s.empty())
         s = "Re-timed, of the run's " + std::to_string(blocks_) +
             " blocks of cases (the cases between two checkpoints, Machine steadiness below): " + s +
-            ". A block is re-timed when a checkpoint at an end of it ran more than " +
+            ". A round times its blocks one at a time, each with its checkpoints and after its own wait for a "
+            "quiet machine; a block is re-timed when a checkpoint at an end of it, as timed beside it, ran more than " +
             std::to_string(static_cast<int>(NOISY_DRIFT * 100)) +
             "% slower than the fastest at its thread count, or a case in it spread more than " +
             std::to_string(static_cast<int>(NOISY_CV * 100)) +

@@ -154,7 +154,7 @@ fi
 run_bench "$tmp/retime" " when re-timing" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
   --benchmark_filter='^steady/' --retime=1 --retime-block=0 --quiet-wait=0
 check "$tmp/retime/out" '^  block 0: asked for (--retime-block)$' "block 0 was not re-timed when asked"
-check "$tmp/retime/out" '^re-timing [1-9][0-9]* cases$' "no re-timing pass"
+check "$tmp/retime/out" '^re-timing [1-9][0-9]* cases (block 0, 1 of 1 this round)$' "no re-timing pass"
 # (the form scripts/readme-figures.py reads)
 check "$tmp/retime/BENCH.md" "^Re-timed, of the run's [1-9][0-9]* blocks of cases (.*): [1-9][0-9]* blocks\\{0,1\\} ([1-9][0-9]* cases with their checkpoints) in round 1\\." \
   "BENCH.md does not say what was re-timed"
@@ -168,7 +168,7 @@ fi
 run_bench "$tmp/wait" " when waiting for a quiet machine" --scene=maps/test/flat-64 --size=32x24 --distance=16 \
   --benchmark_filter='^steady/' --retime=1 --retime-block=0 --quiet-wait=5
 if grep -q '^  the machine is quiet: the reference frame takes [0-9.]* ms (fastest [0-9.]* ms), after [0-9]* s$' "$tmp/wait/out"; then
-  check "$tmp/wait/out" '^re-timing [1-9][0-9]* cases$' "no re-timing pass after the machine was quiet"
+  check "$tmp/wait/out" '^re-timing [1-9][0-9]* cases (block 0, 1 of 1 this round)$' "no re-timing pass after the machine was quiet"
   check "$tmp/wait/BENCH.md" "in round 1" "BENCH.md does not say what was re-timed after the wait"
 elif grep -q '^  the machine stayed slow for [0-9]* s: ' "$tmp/wait/out"; then
   check "$tmp/wait/BENCH.md" "Still disturbed when re-timing stopped: 1 block, the machine having stayed slow" \
