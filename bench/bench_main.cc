@@ -323,10 +323,10 @@ static bool wait_for_quiet(const BenchPlan &plan, const Retimer &r, double limit
 }
 
 // How long the re-timing may take, waits included, as a multiple of the first pass's duration:
-// a machine slow for good would otherwise keep the run going for ever. Each block waits for a
-// quiet machine of its own, so a machine slow half the time needs about twice a block's time
-// per block.
-constexpr double RETIME_BUDGET = 2.0;
+// a machine slow for good would otherwise keep the run going for ever. Twice was tried on a VM
+// whose slow spells were shorter than a block: it tripled the run and left it as noisy
+// (docs/COMMANDS.md), so a noisy run at most doubles.
+constexpr double RETIME_BUDGET = 1.0;
 
 // Rounds of retime.h after the first pass, each timing its disturbed blocks one at a time after
 // a wait for a quiet machine, while the re-timing so far and the next block's estimate (its

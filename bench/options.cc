@@ -42,7 +42,7 @@ void options_usage()
         "                  (docs/SKIPPING.md), as a twin named .../noskip\n"
         "  --retime=N      up to N rounds timing again the blocks of cases a slow checkpoint or\n"
         "                  a spread case shows disturbed (default 3; 0 with --quick), one block\n"
-        "                  at a time, within twice the first pass's duration\n"
+        "                  at a time, within the first pass's duration\n"
         "  --retime-block=I  the first round re-times block I alone, whatever the timings (a test)\n"
         "  --quiet-wait=S  before each such block, wait up to S seconds (within the same budget)\n"
         "                  for the reference frame to run within 5%% of its fastest checkpoint; a\n"
