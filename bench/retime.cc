@@ -22,25 +22,24 @@ void Retimer::capture(int block)
 
 std::vector<int> Retimer::disturbed(int forced)
 {
+    auto faster = [this](int threads, double ms) {
+        auto it = fastest_.find(threads);
+        if (it == fastest_.end() || ms < it->second)
+            fastest_[threads] = ms;
+    };
     int last = -1;
     for (const auto &c : plan_->cases)
         if (c->groups & GROUP_STEADY) {
             last = std::max(last, c->checkpoint);
-            if (case_timed(c.get())) {
-                auto it = fastest_.find(c->threads);
-                if (it == fastest_.end() || c->median_ms < it->second)
-                    fastest_[c->threads] = c->median_ms;
-            }
+            if (case_timed(c.get()))
+                faster(c->threads, c->median_ms);
         }
     for (int k = 0; k < last; k++) // the first look: every block by the first pass's checkpoints
         if (!ends_.count(k))
             capture(k);
     for (const auto &[k, ends] : ends_) // timings a later re-timing has replaced count too
-        for (const End &e : ends) {
-            auto it = fastest_.find(e.threads);
-            if (it == fastest_.end() || e.ms < it->second)
-                fastest_[e.threads] = e.ms;
-        }
+        for (const End &e : ends)
+            faster(e.threads, e.ms);
     // Per block, why it is disturbed (the first reason found); blocks in order.
     std::map<int, std::string> why;
     for (const auto &[k, ends] : ends_)
