@@ -142,6 +142,22 @@ static int run_case(verify_run *v, const verify_case *vc)
     return 0;
 }
 
+/* Morph's keyframe in the effect and mesh cases: the inverted heights, as different from the
+ * map as a keyframe can be, so a blend that ignored either side would show. NULL (said) when
+ * out of memory; the caller frees it. */
+static uint8_t *morph_target(const retro_map *m)
+{
+    const size_t cells = (size_t)m->size * (size_t)m->size;
+    uint8_t *h1 = malloc(cells);
+    if (!h1) {
+        fprintf(stderr, "retro verify: out of memory\n");
+        return NULL;
+    }
+    for (size_t i = 0; i < cells; i++)
+        h1[i] = (uint8_t)(255 - m->height[i]);
+    return h1;
+}
+
 /* One effect case: the reference with the effects against every variant that renders them. */
 static int run_fx_case(verify_run *v, const verify_fx_case *vc)
 {
@@ -151,14 +167,9 @@ static int run_fx_case(verify_run *v, const verify_fx_case *vc)
         fprintf(stderr, "retro verify: %s (run make maps)\n", err);
         return CLI_EBADINPUT;
     }
-    size_t cells = (size_t)m->size * (size_t)m->size;
-    uint8_t *h1 = malloc(cells);
-    if (!h1) {
-        fprintf(stderr, "retro verify: out of memory\n");
+    uint8_t *h1 = morph_target(m);
+    if (!h1)
         return CLI_EBADINPUT;
-    }
-    for (size_t i = 0; i < cells; i++)
-        h1[i] = (uint8_t)(255 - m->height[i]);
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = vc->fx;
@@ -187,14 +198,9 @@ static int run_mesh_case(verify_run *v, const verify_mesh_case *vc)
     verify_case pose = {vc->name, vc->map, vc->x, vc->y, vc->angle, vc->height, vc->rel_height, vc->W, vc->H, vc->D, 1};
     player_t p;
     player_for(&pose, m, &p);
-    size_t cells = (size_t)m->size * (size_t)m->size;
-    uint8_t *h1 = malloc(cells);
-    if (!h1) {
-        fprintf(stderr, "retro verify: out of memory\n");
+    uint8_t *h1 = morph_target(m);
+    if (!h1)
         return CLI_EBADINPUT;
-    }
-    for (size_t i = 0; i < cells; i++)
-        h1[i] = (uint8_t)(255 - m->height[i]);
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = vc->fx;
