@@ -142,10 +142,11 @@ static int run_case(verify_run *v, const verify_case *vc)
     return 0;
 }
 
-/* Morph's keyframe in the effect and mesh cases: the inverted heights, as different from the
- * map as a keyframe can be, so a blend that ignored either side would show. NULL (said) when
- * out of memory; the caller frees it. */
-static uint8_t *morph_target(const retro_map *m)
+/* The effects of an effect or mesh case: the defaults with `flags`, and morph's keyframe the
+ * inverted heights, as different from the map as a keyframe can be, so a blend that ignored
+ * either side would show. Returns that keyframe, which the caller frees; NULL (said) when out
+ * of memory. */
+static uint8_t *case_effects(const retro_map *m, unsigned flags, retro_effects *fx)
 {
     const size_t cells = (size_t)m->size * (size_t)m->size;
     uint8_t *h1 = malloc(cells);
@@ -155,6 +156,10 @@ static uint8_t *morph_target(const retro_map *m)
     }
     for (size_t i = 0; i < cells; i++)
         h1[i] = (uint8_t)(255 - m->height[i]);
+    retro_effects_defaults(fx);
+    fx->flags = flags;
+    fx->morph_height = h1;
+    fx->morph_t = 0.37f;
     return h1;
 }
 
@@ -167,16 +172,12 @@ static int run_fx_case(verify_run *v, const verify_fx_case *vc)
         fprintf(stderr, "retro verify: %s (run make maps)\n", err);
         return CLI_EBADINPUT;
     }
-    uint8_t *h1 = morph_target(m);
+    retro_effects fx;
+    uint8_t *h1 = case_effects(m, vc->fx, &fx);
     if (!h1)
         return CLI_EBADINPUT;
-    retro_effects fx;
-    retro_effects_defaults(&fx);
-    fx.flags = vc->fx;
     fx.fog_exp = vc->fog_exp;
     fx.pitch = vc->pitch;
-    fx.morph_height = h1;
-    fx.morph_t = 0.37f;
     verify_case pose = {vc->name, vc->map, NAN, NAN, vc->angle, 60, 1, 320, 240, 800, 1};
     player_t p;
     player_for(&pose, m, &p);
@@ -198,15 +199,11 @@ static int run_mesh_case(verify_run *v, const verify_mesh_case *vc)
     verify_case pose = {vc->name, vc->map, vc->x, vc->y, vc->angle, vc->height, vc->rel_height, vc->W, vc->H, vc->D, 1};
     player_t p;
     player_for(&pose, m, &p);
-    uint8_t *h1 = morph_target(m);
+    retro_effects fx;
+    uint8_t *h1 = case_effects(m, vc->fx, &fx);
     if (!h1)
         return CLI_EBADINPUT;
-    retro_effects fx;
-    retro_effects_defaults(&fx);
-    fx.flags = vc->fx;
     fx.pitch = 40;
-    fx.morph_height = h1;
-    fx.morph_t = 0.37f;
     ctx_t c = {vc->W, vc->H, m->size, vc->D, 0x66a3ff00u, m->height, m->color, NULL};
     for (int mode = 0; mode < v->chk.family->mode_count; mode++)
         check_row(v, vc->name, mode, &fx, &p, &c);
