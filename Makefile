@@ -48,9 +48,10 @@ LIB_SRC  := $(sort $(filter-out src/cli/% src/submission/% src/peer/% $(COURSE_S
               $(shell find src tools -name '*.c')))
 CLI_SRC  := $(wildcard src/cli/*.c) $(PEER_SRC)
 TEST_SRC := $(wildcard tests/test_*.c) tests/ref_exact.c tests/hard_rig.c tests/skipping_rig.c $(PEER_SRC)
-# retro view's SDL-free parts, tested in tests/test_view_keys.c.
+# The CLI's parts the unit tests call: retro view's SDL-free parts (tests/test_view_keys.c) and
+# the accuracy run's steadiness (tests/test_accuracy_steady.c).
 TEST_CLI := $(addprefix src/cli/,view_keys.c view_font.c view_overlay.c view_render.c \
-              scene_job.c scene_args.c cli_args.c work_estimate.c chart_labels.c)
+              scene_job.c scene_args.c cli_args.c work_estimate.c chart_labels.c accuracy_steady.c timing.c)
 COUNT_TEST_SRC := tests/count_writes.c tests/test_util.c
 # Kernels rebuilt with RETRO_COUNT_WRITES for the write-once test.
 COUNTED  := $(sort $(shell find src -name 'kernel_*.c'))

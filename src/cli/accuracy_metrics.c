@@ -294,7 +294,8 @@ static void machine_name(char *out, size_t outlen)
 }
 
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
-                     uint64_t seed, const acc_families *fam, char *err, size_t errlen)
+                     uint64_t seed, const acc_families *fam, const acc_steady *steady, char *err,
+                     size_t errlen)
 {
     if (write_chart(svg, rows, n, 0, err, errlen))
         return -1;
@@ -318,6 +319,7 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
                "its mode and compared with mode `truth` (definitions: docs/ACCURACY.md).\n\n"
                "Machine: %s. Commit: %s.\n\n",
             date, poses, (unsigned long long)seed, machine, commit && commit[0] ? commit : "unknown (RETRO_COMMIT unset)");
+    acc_steady_write_note(f, steady);
     fprintf(f, "Times are medians over the poses: with the fastest kernel for the variant's mode (the "
                "SIMD kernels exist for modes exact and course only), and with `ybuffer`, one scalar kernel "
                "for every variant, which isolates what the arithmetic itself costs.\n\n");
@@ -334,6 +336,7 @@ int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n
     fprintf(f, "\n![time against error](%s)\n", base(svg));
     if (fam)
         write_families(f, fam);
+    acc_steady_write_table(f, steady);
     if (fclose(f) || rename(tmp, md)) {
         snprintf(err, errlen, "%s: cannot write", md);
         return -1;

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "accuracy_steady.h"
 #include "render.h"
 
 typedef struct {
@@ -51,8 +52,9 @@ typedef struct {
 } acc_families;
 
 /* Writes the Markdown table to md and the Pareto chart to svg (through gnuplot), then the
- * families table and its chart when fam is not NULL. */
+ * families table and its chart when fam is not NULL, then the run's steadiness. */
 int acc_write_report(const char *md, const char *svg, const acc_row *rows, int n, int poses,
-                     uint64_t seed, const acc_families *fam, char *err, size_t errlen);
+                     uint64_t seed, const acc_families *fam, const acc_steady *steady, char *err,
+                     size_t errlen);
 
 #endif

@@ -10,6 +10,7 @@
 #include "timing.h"
 #include "accuracy_mesh.h"
 #include "accuracy_metrics.h"
+#include "accuracy_steady.h"
 #include "cli.h"
 #include "maps_dir.h"
 #include "peer/peer_voxelspace.h"
@@ -60,19 +61,50 @@ static double render_variant(retro_ctx *rc, const retro_kernel *k, variant *v, c
 }
 
 
-/* Two frames to warm the caches the previous variant evicted, then the median of five, as
- * the benchmark times a kernel in a steady state. The last frame stays in out. */
-static double time_variant(retro_ctx *rc, const retro_kernel *k, variant *v, const retro_map *m,
-                           const player_t *p, uint32_t *out, uint32_t *small)
+/* Two frames to warm the caches the previous variant evicted, then the median of n (at most
+ * 15), as the benchmark times a kernel in a steady state. The last frame stays in out. */
+static double time_frames(retro_ctx *rc, const retro_kernel *k, variant *v, const retro_map *m,
+                          const player_t *p, uint32_t *out, uint32_t *small, int n)
 {
-    double t[5];
-    for (int i = 0; i < 7; i++) {
+    double t[15];
+    for (int i = 0; i < n + 2; i++) {
         double ms = render_variant(rc, k, v, m, p, out, small);
         if (i >= 2)
             t[i - 2] = ms;
     }
-    qsort(t, 5, sizeof t[0], cli_cmp_double);
-    return t[2];
+    qsort(t, (size_t)n, sizeof t[0], cli_cmp_double);
+    return t[n / 2];
+}
+
+static double time_variant(retro_ctx *rc, const retro_kernel *k, variant *v, const retro_map *m,
+                           const player_t *p, uint32_t *out, uint32_t *small)
+{
+    return time_frames(rc, k, v, m, p, out, small, 5);
+}
+
+/* The reference frame of the run's steadiness (accuracy_steady.h): one fixed frame, timed
+ * between poses with the two kernels the table's time columns use. */
+typedef struct {
+    retro_map map;
+    player_t pose;
+    variant *exact;
+    const retro_kernel *best, *ybuffer;
+    double t0;
+} ref_frame;
+
+static void checkpoint(acc_steady *st, const ref_frame *r, retro_ctx *rc, uint32_t *img, uint32_t *small,
+                       const char *where, int pose)
+{
+    if (st->n == ACC_STEADY_MAX)
+        return;
+    acc_checkpoint *c = &st->cp[st->n++];
+    c->best = time_frames(rc, r->best, r->exact, &r->map, &r->pose, img, small, 15);
+    c->ybuf = time_frames(rc, r->ybuffer, r->exact, &r->map, &r->pose, img, small, 15);
+    c->at_s = (cli_now_ms() - r->t0) / 1000;
+    if (pose > 0)
+        snprintf(c->where, sizeof c->where, "%.24s, before pose %d", where, pose);
+    else
+        snprintf(c->where, sizeof c->where, "%.40s", where);
 }
 
 static void help(void)
@@ -89,6 +121,8 @@ static void help(void)
            "in every mode; every variant of both families is measured against the mesh in binary64\n"
            "in a second table and chart (accuracy-families.svg/.png beside the first), and a\n"
            "picture pair (accuracy-pair-voxel.png, -mesh.png, -diff.png) goes beside the table.\n"
+           "The report ends with the run's machine steadiness: one reference frame timed between\n"
+           "poses; a spread above 10%% marks the run noisy (make publish-accuracy refuses it).\n"
            "  --poses N      poses per scene (default 20)\n"
            "  --mesh-poses M poses per scene the mesh renders, 0 for none (default 2, at most N)\n"
            "  --seed S       seed of the poses (default 1)\n"
@@ -180,6 +214,24 @@ int cmd_accuracy(int argc, char **argv)
     int total = 0, status = 0;
     char err[512];
     uint64_t rng = seed;
+    /* The reference frame: the first scene's first pose (drawn from its own copy of the seed,
+     * so the poses stay those of the seed), in mode exact, with its map kept for the run. */
+    static acc_steady steady;
+    ref_frame ref = {.exact = NULL, .best = retro_kernel_best(RETRO_MODE_EXACT), .ybuffer = ybuffer,
+                     .t0 = cli_now_ms()};
+    for (int k = 0; k < nv; k++)
+        if (!strcmp(vars[k].label, "exact"))
+            ref.exact = &vars[k];
+    steady.n = 0;
+    steady.best_kernel = ref.best->name;
+    steady.ref = "mode exact, the first pose of the first scene, 640x480, D 800";
+    if (retro_map_load(scenes[0], &ref.map, err, sizeof err)) {
+        retro_ctx_free(rc);
+        acc_mesh_free(&am);
+        return cli_error("accuracy", "%s (run make maps)", err);
+    }
+    uint64_t ref_rng = seed;
+    acc_pose(&ref_rng, ref.map.size, ref.map.height, &ref.pose);
     for (int s = 0; s < ns && !status; s++) {
         retro_map m;
         if (retro_map_load(scenes[s], &m, err, sizeof err)) {
@@ -193,7 +245,10 @@ int cmd_accuracy(int argc, char **argv)
          * the contexts' caches (map maximum, packed map) would take for the same map. */
         retro_ctx_map_changed(rc);
         fprintf(stderr, "accuracy: %s, %ld poses...\n", scenes[s], poses);
+        const char *name = strrchr(scenes[s], '/') ? strrchr(scenes[s], '/') + 1 : scenes[s];
         for (int n = 0; n < poses; n++) {
+            if (n % 5 == 0)
+                checkpoint(&steady, &ref, rc, img, small, name, n + 1);
             player_t p;
             acc_pose(&rng, m.size, m.height, &p);
             int mesh = n < mesh_poses;
@@ -218,6 +273,7 @@ int cmd_accuracy(int argc, char **argv)
         retro_map_free(&m);
     }
     if (!status) {
+        checkpoint(&steady, &ref, rc, img, small, "end of the run", 0);
         double exact_ms = 0, exact_y = 0;
         for (int k = 0; k < nv; k++) {
             qsort(vars[k].ms, (size_t)vars[k].n, sizeof(double), cli_cmp_double);
@@ -243,7 +299,7 @@ int cmd_accuracy(int argc, char **argv)
         }
         acc_mesh_rows(&am, fam_rows + nv, exact_ms);
         acc_families fam = {fam_rows, nv + ACC_MESH_MODES, am.n, fam_svg, pair_prefix};
-        if (acc_write_report(out_md, out_svg, rows, nv, total, seed, am.n ? &fam : NULL, err, sizeof err))
+        if (acc_write_report(out_md, out_svg, rows, nv, total, seed, am.n ? &fam : NULL, &steady, err, sizeof err))
             status = cli_error("accuracy", "%s", err);
         else
             printf("accuracy: %d poses; wrote %s and %s\n", total, out_md, out_svg);
@@ -252,6 +308,7 @@ int cmd_accuracy(int argc, char **argv)
         free(vars[k].ms);
         free(vars[k].ms_y);
     }
+    retro_map_free(&ref.map);
     retro_ctx_free(rc);
     acc_mesh_free(&am);
     free(truth);
