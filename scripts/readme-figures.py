@@ -458,10 +458,14 @@ def accuracy_blocks(md):
     when, poses = (m.group(1), m.group(2)) if m else ("unknown", "?")
     where = accuracy_run(md)
     machine = f" on {where[0]}, commit `{where[1]}`" if where else ""
+    # runs before the accuracy run timed its steadiness have no Spread line
+    sp = re.search(r"^Spread: ([0-9.]+%) with `([^`]+)`, ([0-9.]+%) with `ybuffer`, over (\d+) checkpoints", md, re.M)
+    steady = (f"; the reference frame's time spread {sp.group(1)} with `{sp.group(2)}` and {sp.group(3)} with "
+              f"`ybuffer` across the run's {sp.group(4)} checkpoints") if sp else ""
     out = {}
     out["accuracy:context"] = (
         f"`retro accuracy` rendered {poses} seeded random poses of the six scenes with each "
-        f"variant and compared each frame with mode `truth`, on {when}{machine} (one `make accuracy` run, "
+        f"variant and compared each frame with mode `truth`, on {when}{machine}{steady} (one `make accuracy` run, "
         "published by `make publish` or `make publish-accuracy`; [`results/ACCURACY.md`](results/ACCURACY.md)). Definitions "
         "are in [`docs/ACCURACY.md`](docs/ACCURACY.md). Its times come from its own run, so "
         "compare them with each other, not with the benchmark's.")
