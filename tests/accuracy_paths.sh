@@ -1,7 +1,8 @@
 #!/bin/sh
 # retro accuracy hands its chart path to gnuplot inside a script: a quote in the name must stay
 # part of the name (never end the string and run a command), and a control character, which
-# would end the script's line, is refused before any work with one line and exit 2.
+# would end the script's line, is refused before any work with one line and exit 2, as is a
+# maps folder without the maps.
 set -u
 retro=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 maps=$(pwd)/maps
@@ -26,6 +27,14 @@ for opt in -o --chart; do
     echo "FAIL: $opt with a newline: exit $rc, stderr '$(cat err)'"; fails=$((fails + 1))
   fi
 done
+
+# A maps folder without the generated maps: an error naming the fix, exit 2, no report or chart.
+mkdir nomaps
+"$retro" accuracy --poses 1 --maps "$tmp/nomaps" -o none.md --chart none.svg >out 2>err
+rc=$?
+if [ "$rc" -ne 2 ] || ! tail -n 1 err | grep -q "alpine.*run make maps" || ls | grep -q '^none'; then
+  echo "FAIL: accuracy without maps: exit $rc, stderr '$(cat err)'"; fails=$((fails + 1))
+fi
 
 [ "$fails" -eq 0 ] && echo "accuracy paths: ok" || echo "accuracy paths: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -225,13 +225,11 @@ int cmd_accuracy(int argc, char **argv)
     steady.n = 0;
     steady.best_kernel = ref.best->name;
     steady.ref = "mode exact, the first pose of the first scene, 640x480, D 800";
-    if (retro_map_load(scenes[0], &ref.map, err, sizeof err)) {
-        retro_ctx_free(rc);
-        acc_mesh_free(&am);
-        return cli_error("accuracy", "%s (run make maps)", err);
-    }
     uint64_t ref_rng = seed;
-    acc_pose(&ref_rng, ref.map.size, ref.map.height, &ref.pose);
+    if (retro_map_load(scenes[0], &ref.map, err, sizeof err))
+        status = cli_error("accuracy", "%s (run make maps)", err);
+    else
+        acc_pose(&ref_rng, ref.map.size, ref.map.height, &ref.pose);
     for (int s = 0; s < ns && !status; s++) {
         retro_map m;
         if (retro_map_load(scenes[s], &m, err, sizeof err)) {
