@@ -322,18 +322,16 @@ static bool wait_for_quiet(const BenchPlan &plan, const Retimer &r, double limit
     return quiet;
 }
 
-// How long the re-timing may take, waits included, as a multiple of the first pass's duration:
-// a machine slow for good would otherwise keep the run going for ever. Twice was tried on a VM
-// whose slow spells were shorter than a block: it tripled the run and left it as noisy
-// (docs/COMMANDS.md), so a noisy run at most doubles.
-constexpr double RETIME_BUDGET = 1.0;
-
 // Rounds of retime.h after the first pass, each timing its disturbed blocks one at a time after
 // a wait for a quiet machine, while the re-timing so far and the next block's estimate (its
-// share of the cases, of the first pass's duration) fit in RETIME_BUDGET first passes.
+// share of the cases, of the first pass's duration) fit in --retime-budget first passes. The
+// budget bounds a run on a machine slow for good; by default (1) a noisy run at most doubles:
+// twice was tried on a VM whose slow spells were shorter than a block, and it tripled the run
+// and left it as noisy (docs/COMMANDS.md).
 static void retime(const BenchPlan &plan, Retimer *r, ProgressReporter *progress, const Options &opt, bool quick)
 {
-    const double first = progress->seconds(), budget = RETIME_BUDGET * first;
+    const double first = progress->seconds(), budget = opt.retime_budget * first;
+    r->set_budget(opt.retime_budget);
     for (int round = 1; round <= opt.retime; round++) {
         std::fprintf(stderr, "looking for disturbed blocks (round %d of %d):\n", round, opt.retime);
         std::vector<int> blocks = r->disturbed(round == 1 ? opt.retime_block : -1);
@@ -346,8 +344,8 @@ static void retime(const BenchPlan &plan, Retimer *r, ProgressReporter *progress
             const std::vector<int> one{blocks[i]};
             const double left = budget - (progress->seconds() - first) - r->share(one) * first;
             if (left < 0) {
-                std::fprintf(stderr, "  %zu left as they are: the re-timing has taken its %.0f s (%.0f× the first pass)\n",
-                             blocks.size() - i, budget, RETIME_BUDGET);
+                std::fprintf(stderr, "  %zu left as they are: the re-timing has taken its %.0f s (%g× the first pass)\n",
+                             blocks.size() - i, budget, opt.retime_budget);
                 return;
             }
             if (opt.quiet_wait > 0) {

@@ -43,6 +43,8 @@ void options_usage()
         "  --retime=N      up to N rounds timing again the blocks of cases a slow checkpoint or\n"
         "                  a spread case shows disturbed (default 3; 0 with --quick), one block\n"
         "                  at a time, within the first pass's duration\n"
+        "  --retime-budget=X  the re-timing, waits included, may take X times the first pass\n"
+        "                  (default 1; 0.1..20): more for a machine quiet only in short spells\n"
         "  --retime-block=I  the first round re-times block I alone, whatever the timings (a test)\n"
         "  --quiet-wait=S  before each such block, wait up to S seconds (within the same budget)\n"
         "                  for the reference frame to run within 5%% of its fastest checkpoint; a\n"
@@ -159,6 +161,10 @@ bool options_parse(int n, char **args, Options *o, BenchPlan *plan)
             float w;
             ok = !cli_float(v.c_str(), &w) && w >= 0 && w <= 86400;
             o->quiet_wait = w;
+        } else if (!ok && option(a, "--retime-budget=", &v)) {
+            float x;
+            ok = !cli_float(v.c_str(), &x) && x >= 0.1f && x <= 20;
+            o->retime_budget = x;
         }
         if (!ok) {
             std::fprintf(stderr, "retro-bench: unknown or bad argument '%s' (--help)\n", args[i]);

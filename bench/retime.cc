@@ -155,10 +155,12 @@ std::string Retimer::summary() const
 {
     std::string s;
     for (size_t r = 0; r < rounds_.size(); r++) {
+        if (rounds_[r].empty()) // stopped (by the budget or a wait) before its first block
+            continue;
         char b[96];
         std::snprintf(b, sizeof b, "%s (%d cases with their checkpoints) in round %zu", blocks_of(rounds_[r].size()).c_str(),
                       cases_[r], r + 1);
-        s += std::string(r == 0 ? "" : "; ") + b;
+        s += std::string(s.empty() ? "" : "; ") + b;
         if (r < waits_.size() && waits_[r] >= 1) {
             std::snprintf(b, sizeof b, ", after waiting %.0f s in all for a quiet machine", waits_[r]);
             s += b;
@@ -173,6 +175,12 @@ std::string Retimer::summary() const
             "% slower than the fastest at its thread count, or a case in it spread more than " +
             std::to_string(static_cast<int>(NOISY_CV * 100)) +
             "% over its repetitions. The tables show each case's last timing.";
+    if (!s.empty() && budget_ != 1) {
+        char b[160];
+        std::snprintf(b, sizeof b, " The re-timing, waits included, was given %g times the first pass's duration "
+                      "(--retime-budget; the default is once).", budget_);
+        s += b;
+    }
     if (!left_.empty())
         s += std::string(s.empty() ? "" : " ") + "Still disturbed when re-timing stopped: " + blocks_of(left_.size()) +
              (gave_up_ ? ", the machine having stayed slow through the wait for a quiet one" : "") + ".";

@@ -48,6 +48,10 @@ class Retimer {
     // The fastest checkpoint timing at this thread count so far (NaN before disturbed()).
     double fastest(int threads) const;
 
+    // The re-timing's budget in first passes (--retime-budget), which the summary names when it
+    // is not the default 1.
+    void set_budget(double first_passes) { budget_ = first_passes; }
+
     // A wait for a quiet machine in the current round (seconds; quiet: whether it came).
     void waited(double seconds, bool quiet);
 
@@ -72,6 +76,7 @@ class Retimer {
     std::vector<double> waits_;                  // seconds waited for a quiet machine in each round
     bool gave_up_ = false;                       // the last wait ended with the machine still slow
     int blocks_ = 0;                             // blocks in the run
+    double budget_ = 1;                          // the re-timing's budget in first passes
 };
 
 #endif

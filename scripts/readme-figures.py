@@ -127,7 +127,9 @@ def retimed(md):
     clause = (f"{first} of its {total.group(1)} blocks of cases timed again after a slow checkpoint or a spread case"
               + (f", in {len(rounds)} rounds" if len(rounds) > 1 else ""))
     left = re.search(r"Still disturbed when re-timing stopped: (\d+) blocks?", m.group(1))
-    return clause + (f", {left.group(1)} still disturbed at the end" if left else "")
+    budget = re.search(r"was given ([0-9.]+) times the first pass's duration", m.group(1))
+    return (clause + (f" (within {budget.group(1)} times the first pass's duration)" if budget else "")
+            + (f", {left.group(1)} still disturbed at the end" if left else ""))
 
 
 def since_block(md, repo, digest=None, build=None):

@@ -121,6 +121,10 @@ Test(retime, a_block_is_judged_by_its_own_timing_of_a_shared_checkpoint)
     const std::string s = r.summary();
     cr_assert(s.find("2 blocks (14 cases with their checkpoints) in round 1") != std::string::npos, "%s", s.c_str());
     cr_assert(s.find("Still disturbed when re-timing stopped: 1 block.") != std::string::npos, "%s", s.c_str());
+    cr_assert(s.find("--retime-budget") == std::string::npos, "%s", s.c_str());
+    r.set_budget(4);
+    cr_assert(r.summary().find("was given 4 times the first pass's duration") != std::string::npos, "%s",
+              r.summary().c_str());
 }
 
 // A block taken leaves the list of those still disturbed; one not reached stays in it.
@@ -158,4 +162,26 @@ Test(retime, fastest_counts_replaced_timings)
     r.record({0});
     cr_assert(r.disturbed(-1) == (std::vector<int>{0, 1}));
     cr_assert_float_eq(r.fastest(1), 0.8, 1e-12);
+}
+
+// A round that stops before its first block (the budget was spent, or the first wait ran out)
+// re-timed nothing, so the summary names only the rounds that did.
+Test(retime, a_round_that_took_no_block_is_not_reported)
+{
+    BenchPlan p = plan_of(4, 2);
+    checkpoint(p, 1, 1)->median_ms = 1.3;
+    Retimer r(&p);
+    cr_assert(r.disturbed(-1) == (std::vector<int>{0, 1}));
+    r.begin_round();
+    run(r.take({0}), {{0, 1.0}, {1, 1.0}});
+    r.record({0});
+    r.begin_round(); // round 2 stops before taking block 1
+    const std::string s = r.summary();
+    cr_assert(s.find("1 block (") != std::string::npos && s.find("in round 1.") != std::string::npos, "%s", s.c_str());
+    cr_assert(s.find("round 2") == std::string::npos && s.find("0 blocks") == std::string::npos, "%s", s.c_str());
+    cr_assert(s.find("Still disturbed when re-timing stopped: 1 block.") != std::string::npos, "%s", s.c_str());
+    cr_assert(s.find("--retime-budget") == std::string::npos, "%s", s.c_str());
+    r.set_budget(4);
+    cr_assert(r.summary().find("was given 4 times the first pass's duration") != std::string::npos, "%s",
+              r.summary().c_str());
 }
