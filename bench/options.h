@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cases.h"
+#include "retime.h"
 #include "run_context.h"
 
 struct Options {
@@ -18,7 +19,7 @@ struct Options {
     int retime = -1;        // --retime: rounds of re-timing disturbed blocks (retime.h); -1: 3, quick 0
     int retime_block = -1;  // --retime-block: the block the first round re-times alone (a test)
     double quiet_wait = -1; // --quiet-wait: most seconds to wait for a quiet machine before a round; -1: 120, quick 0
-    double retime_budget = 1; // --retime-budget: the re-timing's time, waits included, in first passes
+    double retime_budget = RETIME_BUDGET_DEFAULT; // --retime-budget: the re-timing's time, waits included, in first passes
 };
 
 void options_usage();

@@ -175,7 +175,7 @@ std::string Retimer::summary() const
             "% slower than the fastest at its thread count, or a case in it spread more than " +
             std::to_string(static_cast<int>(NOISY_CV * 100)) +
             "% over its repetitions. The tables show each case's last timing.";
-    if (!s.empty() && budget_ != 1) {
+    if (!s.empty() && budget_ != RETIME_BUDGET_DEFAULT) {
         char b[160];
         std::snprintf(b, sizeof b, " The re-timing, waits included, was given %g times the first pass's duration "
                       "(--retime-budget; the default is once).", budget_);

@@ -19,6 +19,9 @@
 
 #include "cases.h"
 
+// The re-timing's default budget in first passes (--retime-budget).
+constexpr double RETIME_BUDGET_DEFAULT = 1;
+
 class Retimer {
   public:
     explicit Retimer(BenchPlan *plan) : plan_(plan) {}
@@ -49,7 +52,7 @@ class Retimer {
     double fastest(int threads) const;
 
     // The re-timing's budget in first passes (--retime-budget), which the summary names when it
-    // is not the default 1.
+    // is not RETIME_BUDGET_DEFAULT.
     void set_budget(double first_passes) { budget_ = first_passes; }
 
     // A wait for a quiet machine in the current round (seconds; quiet: whether it came).
@@ -76,7 +79,7 @@ class Retimer {
     std::vector<double> waits_;                  // seconds waited for a quiet machine in each round
     bool gave_up_ = false;                       // the last wait ended with the machine still slow
     int blocks_ = 0;                             // blocks in the run
-    double budget_ = 1;                          // the re-timing's budget in first passes
+    double budget_ = RETIME_BUDGET_DEFAULT;      // the re-timing's budget in first passes
 };
 
 #endif
