@@ -93,7 +93,9 @@ def noisy_note(md):
 
 def steadiness(md):
     """The reference frame's spread across the run's checkpoints (BENCH.md, Machine steadiness),
-    per thread count, as a clause for the README's context line; "" for a run without them."""
+    per thread count, and the machine probes' spread where the table has them, as a clause for
+    the README's context line; "" for a run without them. The probes time fixed loops, not the
+    frame, so they are named apart: they tell whether the clock or the caches moved."""
     t = tables(md).get("Machine steadiness")
     if not t:
         return ""
@@ -102,15 +104,23 @@ def steadiness(md):
     if spread is None:
         return ""
     checkpoints = sum(1 for r in t[1:] if r[0].isdigit())
-    parts = []
+    frame, probes = [], []
     for h, cell in zip(head[2:], spread[2:]):
         m = re.match(r"([0-9.]+)%", cell)
-        if m:
-            parts.append(f"{m.group(1)}% at {h}")
-    if not parts:
+        if not m:
+            continue
+        if re.fullmatch(r"\d+ threads?", h):
+            frame.append(f"{m.group(1)}% at {h}")
+        else:
+            probes.append(f"{m.group(1)}% ({h})")
+    if not frame:
         return ""
-    return (f"the reference frame's time spread {' and '.join(parts)} across {checkpoints} checkpoints "
-            "(max − min over the median)")
+    clause = (f"the reference frame's time spread {' and '.join(frame)} across {checkpoints} checkpoints "
+              "(max − min over the median)")
+    if probes:
+        listed = probes[0] if len(probes) == 1 else ", ".join(probes[:-1]) + " and " + probes[-1]
+        clause += f", and the machine probes timed with it spread {listed}"
+    return clause
 
 
 def retimed(md):
@@ -186,9 +196,15 @@ def since_commit(commit, repo, digest=None, build=None):
                              capture_output=True, text=True, check=True).stdout.splitlines()
     except (OSError, subprocess.CalledProcessError):
         return None
-    if not log:
-        return f"The kernel sources (`src/`, `include/`) are those of the run's commit `{commit[:7]}`."
     code = code_sentence(commit, digest, build)
+    if not log:
+        same = f"The kernel sources (`src/`, `include/`) are those of the run's commit `{commit[:7]}`."
+        # the same sources can still build to other code (another compiler, other flags): say so
+        # only when a comparable build shows it, so that every other build gives the same block
+        if code and "compile to other machine code" in code:
+            return (same + code + " The figures here are those of the run's build until a steady run of "
+                    "this build is published.")
+        return same
     if code is None:
         return None
     hashes = list(reversed(log))
