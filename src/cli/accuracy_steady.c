@@ -39,11 +39,11 @@ void acc_steady_write_note(FILE *f, const acc_steady *s)
 void acc_steady_write_table(FILE *f, const acc_steady *s)
 {
     fprintf(f, "\n## Machine steadiness\n\nThe same frame (%s) timed at checkpoints through the run, between "
-               "the poses: median ms/frame of 15 frames after two untimed ones, with the fastest kernel and "
-               "with `ybuffer`, and when the checkpoint finished. Spread: (max − min) / median; above %.0f%% "
-               "in either column the run is marked noisy.\n\n"
+               "the poses: median ms/frame of the frames of at least %.0f ms (and at least %d frames) after two "
+               "untimed ones, with the fastest kernel and with `ybuffer`, and when the checkpoint finished. "
+               "Spread: (max − min) / median; above %.0f%% in either column the run is marked noisy.\n\n"
                "| checkpoint | at (s) | `%s` ms | `ybuffer` ms |\n|---|--:|--:|--:|\n",
-            s->ref, 100 * ACC_STEADY_NOISY, s->best_kernel);
+            s->ref, ACC_STEADY_MIN_MS, ACC_STEADY_MIN_FRAMES, 100 * ACC_STEADY_NOISY, s->best_kernel);
     for (int i = 0; i < s->n; i++)
         fprintf(f, "| %s | %.1f | %.3f | %.3f |\n", s->cp[i].where, s->cp[i].at_s, s->cp[i].best, s->cp[i].ybuf);
     fprintf(f, "\nSpread: %.1f%% with `%s`, %.1f%% with `ybuffer`, over %d checkpoints: %s.\n",

@@ -11,6 +11,11 @@ enum { ACC_STEADY_MAX = 256 };
 /* Above this spread of the reference frame's checkpoints the run is marked noisy, the
  * threshold of make bench. */
 #define ACC_STEADY_NOISY 0.10
+/* A checkpoint times each kernel for at least this many frames and this long. Fifteen frames
+ * of the fastest kernel last about 2 ms, short enough that one preemption of the virtual CPU
+ * moves their median; tens of milliseconds see the machine's speed, not one moment of it. */
+enum { ACC_STEADY_MIN_FRAMES = 15, ACC_STEADY_MAX_FRAMES = 1024 };
+#define ACC_STEADY_MIN_MS 40.0
 
 typedef struct {
     double at_s;       /* when the checkpoint finished, seconds into the run */
