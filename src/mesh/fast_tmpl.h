@@ -15,7 +15,6 @@
 #include "fast_raster.h"
 #include "fast_ref.h"
 #include "fast_tiny.h"
-#include "mesh_rec.h"
 #include "mesh_fragment.h"
 #include "mesh_internal.h"
 
@@ -31,8 +30,7 @@ typedef struct {
 
 /* Row j of squares, in lanes: which squares go to the reference path (slow), which triangles
  * of each kind survive to a raster (cand) or are tiny and cover a centre (tiny). */
-static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int ni, int recording, fast_row *R,
-                              fast_counts *n)
+static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int ni, fast_row *R, fast_counts *n)
 {
     const int nocull = (f->mfx & RETRO_MESH_FX_NOCULL) != 0, water = (f->fx & RETRO_FX_WATER) != 0;
     const int generic = (f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD));
@@ -97,8 +95,8 @@ static void fast_classify_row(const mesh_frame *f, const fast_soa *b, int j, int
             const unsigned in = ok & fast_bbox(f, x3[0], y3[0], x3[1], y3[1], x3[2], y3[2], &c0, &r0, &small, &two_c, &two_r);
             const unsigned tiny = lanes_ok ? in & small & pos : 0;
             /* A != 0 with the orientation drawn: rasterized (scan conversion counts the generic ones
-             * it draws; those recorded are counted here, where each is seen once) */
-            n->rast += (uint64_t)__builtin_popcount(generic && !recording ? ok & ~in : ok);
+             * it draws) */
+            n->rast += (uint64_t)__builtin_popcount(generic ? ok & ~in : ok);
             R->cand[t] |= (in & ~tiny) << i0;
             if (!tiny)
                 continue;
@@ -140,57 +138,11 @@ static inline void fast_tiny_draw(retro_mesh_ctx *mc, const fast_row *R, int t, 
     }
 }
 
-/* mesh-omp's first pass: the same drawing as words (mesh_rec.h). */
-static inline void fast_tiny_record(mesh_recbuf *rec, const mesh_frame *f, const fast_row *R, int t, int i, int I, int J)
-{
-    const fast_tiny *T = &R->tt[t];
-    const int S = f->S;
-    for (int n = 0; n < 4; n++) {
-        if (!(T->cov[n] >> i & 1u))
-            continue;
-        uint32_t *p = rec_room(rec, 4);
-        if (!p)
-            return;
-        const int r = R->r0[t][i] + (n >> 1), c = R->c0[t][i] + (n & 1);
-        int ci = I + (int)(T->sxb[n] >> i & 1u), cj = J + (int)(T->syb[n] >> i & 1u);
-        ci -= ci == S ? S : 0;
-        cj -= cj == S ? S : 0;
-        rec_rows(rec, r, r);
-        p[0] = REC_FRAG;
-        p[1] = (uint32_t)((size_t)(f->H - r) * (size_t)f->W + (size_t)c);
-        p[2] = rec_fbits(T->z[n][i]);
-        p[3] = (uint32_t)((size_t)cj * (size_t)S + (size_t)ci);
-    }
-}
-
-static inline void fast_record(mesh_recbuf *rec, int H, uint32_t head, const int32_t X[3], const int32_t Y[3],
-                               const float *q, int I, int J)
-{
-    rec_rows_of(rec, Y, H);
-    uint32_t *p = rec_room(rec, q ? 12 : 9);
-    if (!p)
-        return;
-    p[0] = head;
-    if (!q) /* REC_GENERIC: I, J, X, Y */
-        p[1] = (uint32_t)I, p[2] = (uint32_t)J, p += 3;
-    else
-        p++;
-    for (int k = 0; k < 3; k++) {
-        p[k] = (uint32_t)X[k];
-        p[3 + k] = (uint32_t)Y[k];
-        if (q)
-            p[6 + k] = rec_fbits(q[k]);
-    }
-    if (q) /* REC_BIG: X, Y, q, I, J */
-        p[9] = (uint32_t)I, p[10] = (uint32_t)J;
-}
-
 void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int sy)
 {
     const mesh_frame *f = &mc->f;
     const int ni = Ib - Ia + 1, nj = Jb - Ja + 1, stride = ni + 1;
     const int generic = (f->fx & RETRO_FX_SHADE) || (f->mfx & (RETRO_MESH_FX_TEXTURE | RETRO_MESH_FX_GOURAUD));
-    mesh_recbuf *rec = mc->rec;
     fast_soa b;
     float dxv[FR];
     for (int i = 0; i < FR; i++)
@@ -207,7 +159,7 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
     fast_row rows[MESH_BLOCK];
     fast_counts cnt = {0, 0, 0, 0, 0};
     for (int j = 0; j < nj; j++)
-        fast_classify_row(f, &b, j, ni, mc->rec != NULL, &rows[j], &cnt);
+        fast_classify_row(f, &b, j, ni, &rows[j], &cnt);
     mc->st.submitted += cnt.submitted;
     mc->st.culled += cnt.culled;
     mc->st.clipped_out += cnt.clipped_out;
@@ -230,13 +182,6 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
             m &= ~(1u << i);
             const int I = Ia + i, J = Ja + j;
             if (R->slow >> i & 1u) {
-                uint32_t *p;
-                if (rec) {
-                    if ((p = rec_room(rec, 3)) != NULL)
-                        p[0] = REC_SLOW, p[1] = (uint32_t)I, p[2] = (uint32_t)J;
-                    rec_rows(rec, 1, f->H); /* clipping decides */
-                    continue;
-                }
                 fast_full_vertex(mc, done, stride, Ia, Ja, i, j);
                 fast_full_vertex(mc, done, stride, Ia, Ja, i + 1, j);
                 fast_full_vertex(mc, done, stride, Ia, Ja, i + 1, j + 1);
@@ -249,10 +194,7 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
             for (int n = 0; n < 2; n++) {
                 const int t = n ? 1 - first : first;
                 if (R->tiny[t] >> i & 1u) {
-                    if (rec)
-                        fast_tiny_record(rec, f, R, t, i, iw[i], jw[j]);
-                    else
-                        fast_tiny_draw(mc, R, t, i, iw[i], jw[j], &written);
+                    fast_tiny_draw(mc, R, t, i, iw[i], jw[j], &written);
                     continue;
                 }
                 if (!(R->cand[t] >> i & 1u))
@@ -264,16 +206,7 @@ void FAST_BLOCK(retro_mesh_ctx *mc, int Ia, int Ib, int Ja, int Jb, int sx, int 
                     X[k] = b.X[vj[k]][vi_[k]];
                     Y[k] = b.Y[vj[k]][vi_[k]];
                 }
-                if (rec) {
-                    const int back = (int)(R->back[t] >> i & 1u);
-                    float q[3];
-                    for (int k = 0; k < 3; k++)
-                        q[k] = b.q[vj[k]][vi_[k]];
-                    if (generic)
-                        fast_record(rec, f->H, REC_GENERIC | (uint32_t)t << 8 | (uint32_t)back << 16, X, Y, NULL, I, J);
-                    else
-                        fast_record(rec, f->H, REC_BIG | (uint32_t)t << 8, X, Y, q, iw[i], jw[j]);
-                } else if (generic) {
+                if (generic) {
                     int idx[3];
                     for (int k = 0; k < 3; k++) {
                         fast_full_vertex(mc, done, stride, Ia, Ja, vi_[k], vj[k]);

@@ -32,7 +32,6 @@
 #define mesh_omp_render retro_mesh_omp_render
 #define mesh_omp_free retro_mesh_omp_free
 #define mesh_block_draw retro_mesh_block_draw
-#define mesh_replay retro_mesh_replay
 #pragma GCC visibility push(hidden)
 
 #define MESH_SUB RETRO_MESH_SUBPIXEL_BITS
@@ -85,8 +84,8 @@ typedef struct mesh_frame {
     /* The fast kernels (mesh_fast.h) draw the z-buffer's image: kernel is then ZBUFFER and
      * fast names the ISA of the block stage (MESH_FAST_*). */
     int fast;
-    /* Rows this frame writes, rlo..rhi (mesh-omp's bands; 1..H otherwise), and the band's
-     * bottom and top planes for block culling (cb, ct for the whole screen). */
+    /* Rows this frame writes, rlo..rhi (1..H, or a band of mesh-omp's water pass), and the
+     * band's bottom and top planes for block culling (cb, ct for the whole screen). */
     int rlo, rhi;
     double bcb, bct;
 } mesh_frame;
@@ -123,21 +122,13 @@ typedef struct {
     unsigned out;       /* bit p: outside plane p */
 } mesh_snap;
 
-/* mesh-omp's two passes (mesh_omp.c): the blocks traversal would draw, listed in its order (6
- * ints each: Ia, Ib, Ja, Jb, sx, sy), and a block stage's drawing recorded as a stream of words
- * (mesh_rec.h) for each band to replay. A buffer that cannot grow sets oom. */
+/* mesh-omp (mesh_omp.c): the blocks traversal would draw, listed in its order (6 ints each: Ia,
+ * Ib, Ja, Jb, sx, sy). A list that cannot grow sets oom. */
 typedef struct {
     int32_t (*b)[6];
     size_t n, cap;
     int oom;
 } mesh_blocks;
-
-typedef struct {
-    uint32_t *w;
-    size_t n, cap;
-    int oom;
-    int rmin, rmax; /* the rows the records since the caller's reset can draw in */
-} mesh_recbuf;
 
 struct retro_mesh_ctx {
     mesh_frame f;
@@ -154,7 +145,6 @@ struct retro_mesh_ctx {
     uint32_t *out;
     struct mesh_omp *omp; /* mesh-omp's threads and their contexts (mesh_omp.c), or NULL */
     mesh_blocks *collect; /* non-NULL: traversal lists its blocks here instead of drawing them */
-    mesh_recbuf *rec;     /* non-NULL: the fast block stage records its drawing here */
     retro_mesh_stats st;
     int oom;              /* a water buffer could not grow */
     char err[160];
@@ -188,8 +178,6 @@ void mesh_raster_int(retro_mesh_ctx *mc, const mesh_sub *s, int64_t A, const int
 void mesh_traverse(retro_mesh_ctx *mc);
 /* One listed block (mesh_blocks) through the frame's block stage. */
 void mesh_block_draw(retro_mesh_ctx *mc, const int32_t b[6]);
-/* Draws a recorded stream (mesh_rec.h) in mc's rows rlo..rhi. */
-void mesh_replay(retro_mesh_ctx *mc, const uint32_t *w, size_t n);
 void mesh_water_add(retro_mesh_ctx *mc, const mesh_tri *t);
 void mesh_water_draw(retro_mesh_ctx *mc);
 /* The fast kernels' block stage: squares [Ia, Ib] x [Ja, Jb] of a block not culled, in the

@@ -1,20 +1,28 @@
-/* mesh-omp: the fast kernel's work split over threads in two passes, so that no thread repeats
- * another's geometry and the raster is shared out by rows.
- * 1. The blocks traversal does not cull are listed in its order; the threads take them
- *    dynamically and run the fast block stage on each in recording mode (mesh_rec.h): vertex
- *    stage, classification, tiny triangles up to their depth tests, all done once per block.
- * 2. Each thread owns one band of contiguous rows and replays every block's record in the list's
- *    order (mesh_replay.c), drawing only its rows: the depth tests of tiny triangles, the raster
- *    of larger ones, the reference stages for squares that need clipping, then the water pass
- *    (every band sorts the same water list and blends only its rows).
- * Each pixel therefore sees exactly the serial kernel's sequence of fragments: the bytes do not
- * depend on the thread count, which thread recorded a block, the band boundaries or the
- * schedule. The boundaries follow the previous frame's second-pass times (the terrain is not
- * spread evenly over the rows); that changes only who draws a row, never what is drawn.
+/* mesh-omp: the fast kernel's work split over threads by runs of the block list, composited
+ * after the fact (sort-last), so that no thread repeats another's work.
+ * 1. The blocks traversal does not cull are listed in its order and cut into T contiguous
+ *    runs. Thread t draws run t with the fast block stage into a depth and colour buffer of its
+ *    own (thread 0 into the frame's), as the serial kernel would draw it into a cleared frame.
+ * 2. By rows, the buffers are merged in run order: a later run's pixel replaces the frame's
+ *    only where its depth is strictly smaller.
+ * 3. The water triangles, each thread's list appended in run order, are drawn by bands of
+ *    rows over the merged frame.
+ * Why the bytes are the serial kernel's: the terrain only writes (no fragment reads a colour;
+ * fog depends on the fragment's own depth), and the depth test is strict, so each pixel keeps
+ * the first fragment of least depth in drawing order. Within a run that is the run's own
+ * buffer; across runs every fragment of an earlier run was drawn first, so the earlier run
+ * wins ties, which the merge's strict test gives. The water list in run order is the serial
+ * list, so its sequence numbers, and the water pass's order, are the same. None of this
+ * depends on the thread count or where the runs are cut; the cuts follow the previous frame's
+ * times (the cost per block is far from uniform: near blocks raster more), which changes
+ * only who draws a block. The one thing that does change is `written`: a later run stores
+ * fragments an earlier run's terrain hides, so it counts at least mesh-zbuffer's writes,
+ * exactly those at one thread (docs/MESH_FAST.md).
  * Threads are pinned with hwloc one per core for the frame and get their former binding back
  * after it. */
 #include <hwloc.h>
 #include <limits.h>
+#include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,19 +31,22 @@
 
 #define MESH_MAX_THREADS 64
 
+/* Extra buffers (8 bytes a pixel per thread after the first) are kept to this many bytes in
+ * all: a frame too large for them runs on fewer threads. */
+#define MESH_OMP_EXTRA_BYTES ((size_t)1 << 30)
+
 struct mesh_omp {
     retro_mesh_ctx *sub[MESH_MAX_THREADS]; /* per-thread contexts: scratch, water list, stats */
     hwloc_bitmap_t saved[MESH_MAX_THREADS]; /* each thread's binding before the frame */
-    int cut[MESH_MAX_THREADS + 1];         /* band t: rows cut[t] + 1 .. cut[t + 1] */
-    double secs[MESH_MAX_THREADS];         /* each band's time in the previous frame */
-    int last_T, last_H;
-    mesh_blocks blocks;                    /* pass 1's blocks, in traversal order */
-    mesh_recbuf rec[MESH_MAX_THREADS];     /* each thread's records of the blocks it took */
-    int *owner;                            /* block k: recorded by thread owner[k] ... */
-    size_t *from, *to;                     /* ... as words from[k] .. to[k] of its buffer */
-    int (*rows)[2];                        /* drawing in rows rows[k][0] .. rows[k][1] */
-    size_t blocks_cap;
-    retro_mesh_stats geo[MESH_MAX_THREADS]; /* each thread's counts in pass 1 */
+    float *zbuf[MESH_MAX_THREADS];          /* thread t > 0: its depth and colour buffers ... */
+    uint32_t *cbuf[MESH_MAX_THREADS];
+    size_t buf_px[MESH_MAX_THREADS];        /* ... of this many pixels */
+    int run[MESH_MAX_THREADS + 1];          /* run t: blocks run[t] .. run[t + 1] - 1 */
+    double secs[MESH_MAX_THREADS];          /* each run's time in the previous frame */
+    int last_T;
+    size_t last_n;
+    mesh_blocks blocks;                     /* the blocks to draw, in traversal order */
+    retro_mesh_stats terrain[MESH_MAX_THREADS]; /* each thread's counts before the water pass */
     hwloc_topology_t topo;
     int have_topo, cores;
 };
@@ -46,21 +57,18 @@ void mesh_omp_free(struct mesh_omp *o)
         return;
     for (int t = 0; t < MESH_MAX_THREADS; t++)
         if (o->sub[t]) {
-            o->sub[t]->depth = NULL; /* the parent's */
+            o->sub[t]->depth = NULL; /* the parent's or zbuf[t] */
             retro_mesh_ctx_free(o->sub[t]);
         }
-    for (int t = 0; t < MESH_MAX_THREADS; t++)
+    for (int t = 0; t < MESH_MAX_THREADS; t++) {
         if (o->saved[t])
             hwloc_bitmap_free(o->saved[t]);
+        free(o->zbuf[t]);
+        free(o->cbuf[t]);
+    }
     if (o->have_topo)
         hwloc_topology_destroy(o->topo);
-    for (int t = 0; t < MESH_MAX_THREADS; t++)
-        free(o->rec[t].w);
     free(o->blocks.b);
-    free(o->owner);
-    free(o->from);
-    free(o->to);
-    free(o->rows);
     free(o);
 }
 
@@ -98,15 +106,16 @@ static int bind_core(struct mesh_omp *o, int t, hwloc_bitmap_t saved)
     return core && hwloc_set_cpubind(o->topo, core->cpuset, HWLOC_CPUBIND_THREAD) == 0;
 }
 
-/* Band boundaries for T threads over H rows: equal on the first frame (or a new size), then
- * cut where the previous frame's cost, taken as uniform inside each band, splits evenly. */
-static void plan_bands(struct mesh_omp *o, int T, int H)
+/* Where the runs of n blocks are cut for T threads: equal counts on the first frame (or a new
+ * count), then where the previous frame's time, taken as uniform over each run's blocks,
+ * splits evenly. */
+static void plan_runs(struct mesh_omp *o, int T, size_t n)
 {
-    if (T != o->last_T || H != o->last_H) {
+    if (T != o->last_T || n != o->last_n) {
         for (int t = 0; t <= T; t++)
-            o->cut[t] = (int)((int64_t)H * t / T);
+            o->run[t] = (int)((int64_t)n * t / T);
         o->last_T = T;
-        o->last_H = H;
+        o->last_n = n;
         return;
     }
     double total = 0;
@@ -116,45 +125,48 @@ static void plan_bands(struct mesh_omp *o, int T, int H)
         return;
     int cut[MESH_MAX_THREADS + 1];
     cut[0] = 0;
-    cut[T] = H;
+    cut[T] = (int)n;
     double acc = 0;
     int b = 0;
     for (int t = 1; t < T; t++) {
         double goal = total * t / T;
-        /* walk bands until the goal falls inside band b, then interpolate a row in it */
+        /* walk runs until the goal falls inside run b, then interpolate a block in it */
         while (b < T - 1 && acc + o->secs[b] < goal)
             acc += o->secs[b++];
-        int lo = o->cut[b], hi = o->cut[b + 1];
+        int lo = o->run[b], hi = o->run[b + 1];
         double frac = o->secs[b] > 0 ? (goal - acc) / o->secs[b] : 0.5;
-        int r = lo + (int)(frac * (hi - lo) + 0.5);
-        int minr = cut[t - 1] + (H >= T ? 1 : 0), maxr = H - (H >= T ? T - t : 0);
-        cut[t] = r < minr ? minr : r > maxr ? maxr : r;
+        int k = lo + (int)(frac * (hi - lo) + 0.5);
+        cut[t] = k < cut[t - 1] ? cut[t - 1] : k > (int)n ? (int)n : k;
     }
     for (int t = 0; t <= T; t++)
-        o->cut[t] = cut[t];
+        o->run[t] = cut[t];
 }
 
-/* Room for pass 1's index of n blocks. */
-static int block_index(struct mesh_omp *o, size_t n)
+/* Buffers for threads 1 .. T-1 at npx pixels; returns how many threads have them (at least 1). */
+static int thread_buffers(struct mesh_omp *o, int T, size_t npx)
 {
-    if (n <= o->blocks_cap)
-        return 0;
-    int *ow = realloc(o->owner, n * sizeof *ow);
-    if (ow)
-        o->owner = ow;
-    size_t *fr = realloc(o->from, n * sizeof *fr);
-    if (fr)
-        o->from = fr;
-    size_t *to = realloc(o->to, n * sizeof *to);
-    if (to)
-        o->to = to;
-    int(*rows)[2] = realloc(o->rows, n * sizeof *rows);
-    if (rows)
-        o->rows = rows;
-    if (!ow || !fr || !to || !rows)
-        return -1;
-    o->blocks_cap = n;
-    return 0;
+    const size_t per = npx * (sizeof(float) + sizeof(uint32_t));
+    const size_t most = per ? MESH_OMP_EXTRA_BYTES / per : (size_t)T;
+    if ((size_t)(T - 1) > most)
+        T = (int)most + 1;
+    for (int t = 1; t < T; t++) {
+        if (o->buf_px[t] >= npx)
+            continue;
+        free(o->zbuf[t]);
+        free(o->cbuf[t]);
+        o->zbuf[t] = malloc(npx * sizeof(float));
+        o->cbuf[t] = malloc(npx * sizeof(uint32_t));
+        if (!o->zbuf[t] || !o->cbuf[t]) {
+            free(o->zbuf[t]);
+            free(o->cbuf[t]);
+            o->zbuf[t] = NULL;
+            o->cbuf[t] = NULL;
+            o->buf_px[t] = 0;
+            return t;
+        }
+        o->buf_px[t] = npx;
+    }
+    return T;
 }
 
 static void add_geometry(retro_mesh_stats *d, const retro_mesh_stats *s)
@@ -163,6 +175,27 @@ static void add_geometry(retro_mesh_stats *d, const retro_mesh_stats *s)
     d->culled += s->culled;
     d->clipped_out += s->clipped_out;
     d->rasterized += s->rasterized;
+}
+
+/* Appends thread u's water triangles to thread 0's list (run order); 0 when it cannot grow. */
+static int append_water(retro_mesh_ctx *to, const retro_mesh_ctx *from)
+{
+    if (!from->water_n)
+        return 1;
+    size_t n = to->water_n + from->water_n;
+    if (n > to->water_cap) {
+        size_t cap = to->water_cap ? to->water_cap : 256;
+        while (cap < n)
+            cap *= 2;
+        mesh_water_tri *w = realloc(to->water, cap * sizeof *w);
+        if (!w)
+            return 0;
+        to->water = w;
+        to->water_cap = cap;
+    }
+    memcpy(to->water + to->water_n, from->water, from->water_n * sizeof *from->water);
+    to->water_n = n;
+    return 1;
 }
 
 retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
@@ -179,80 +212,104 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
     mc->collect = &o->blocks;
     mesh_traverse(mc);
     mc->collect = NULL;
-    if (o->blocks.oom || block_index(o, o->blocks.n)) {
+    if (o->blocks.oom) {
         strcpy(mc->err, "out of memory");
         return RETRO_MESH_ENOMEM;
     }
-    plan_bands(o, T, mc->f.H);
+    const size_t npx = (size_t)mc->f.W * (size_t)mc->f.H;
+    T = thread_buffers(o, T, npx);
+    plan_runs(o, T, o->blocks.n);
     for (int t = 0; t < T; t++) {
         retro_mesh_ctx *s = o->sub[t];
-        s->f = mc->f; /* pass 1 records for the whole screen */
-        s->depth = mc->depth;
-        s->out = mc->out;
+        s->f = mc->f; /* every run draws on the whole screen */
+        s->depth = t ? (void *)o->zbuf[t] : mc->depth;
+        s->out = t ? o->cbuf[t] : mc->out;
         memset(&s->st, 0, sizeof s->st);
         s->water_n = 0;
         s->oom = 0;
-        o->rec[t].n = 0;
-        o->rec[t].oom = 0;
-        s->rec = &o->rec[t];
     }
-    const long nb = (long)o->blocks.n;
+    int water_oom = 0;
 #pragma omp parallel num_threads(T)
     {
-        int t = omp_get_thread_num();
+        const int t = omp_get_thread_num();
         retro_mesh_ctx *s = o->sub[t];
-        int bound = bind_core(o, t, o->saved[t]);
-#pragma omp for schedule(dynamic, 4)
-        for (long k = 0; k < nb; k++) {
-            mesh_recbuf *r = &o->rec[t];
-            o->from[k] = r->n;
-            r->rmin = INT_MAX;
-            r->rmax = INT_MIN;
+        const int bound = bind_core(o, t, o->saved[t]);
+        const double t0 = omp_get_wtime();
+        if (t) { /* the frame's own buffers were cleared by retro_mesh_render */
+            float *z = o->zbuf[t];
+            for (size_t i = 0; i < npx; i++)
+                z[i] = (float)INFINITY;
+        }
+        for (int k = o->run[t]; k < o->run[t + 1]; k++)
             mesh_block_draw(s, o->blocks.b[k]);
-            o->owner[k] = t;
-            o->to[k] = r->n;
-            o->rows[k][0] = r->rmin;
-            o->rows[k][1] = r->rmax;
-        }
-        /* (the loop's barrier: every record is complete) */
-        o->geo[t] = s->st;
-        memset(&s->st, 0, sizeof s->st);
-        s->rec = NULL;
-        s->f.rlo = o->cut[t] + 1;
-        s->f.rhi = o->cut[t + 1];
-        double t0 = omp_get_wtime();
-        if (s->f.rlo <= s->f.rhi) {
-            for (long k = 0; k < nb; k++) {
-                const mesh_recbuf *r = &o->rec[o->owner[k]];
-                if (!r->oom && o->rows[k][0] <= s->f.rhi && o->rows[k][1] >= s->f.rlo)
-                    mesh_replay(s, r->w + o->from[k], o->to[k] - o->from[k]);
-            }
-            mesh_water_draw(s);
-        }
         o->secs[t] = omp_get_wtime() - t0;
+        o->terrain[t] = s->st;
+#pragma omp barrier
+        { /* the merge, rows split evenly: a later run only where strictly nearer */
+            float *z = mc->depth;
+            uint32_t *out = mc->out;
+            const size_t a = npx * (size_t)t / (size_t)T, e = npx * (size_t)(t + 1) / (size_t)T;
+            for (int u = 1; u < T; u++) {
+                const float *zu = o->zbuf[u];
+                const uint32_t *cu = o->cbuf[u];
+                for (size_t i = a; i < e; i++)
+                    if (zu[i] < z[i]) {
+                        z[i] = zu[i];
+                        out[i] = cu[i];
+                    }
+            }
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            for (int u = 1; u < T; u++)
+                if (!append_water(o->sub[0], o->sub[u]))
+                    water_oom = 1;
+        }
+        /* (the single's barrier: the list is complete) */
+        if (!water_oom) {
+            mesh_water_tri *own = s->water;
+            const size_t own_n = s->water_n;
+            s->water = o->sub[0]->water; /* read only: each band sorts into its own order */
+            s->water_n = o->sub[0]->water_n;
+            s->depth = mc->depth;
+            s->out = mc->out;
+            s->f.rlo = (int)((int64_t)mc->f.H * t / T) + 1;
+            s->f.rhi = (int)((int64_t)mc->f.H * (t + 1) / T);
+            if (s->f.rlo <= s->f.rhi)
+                mesh_water_draw(s);
+#pragma omp barrier
+            s->water = own;
+            s->water_n = own_n;
+        }
         if (bound)
             hwloc_set_cpubind(o->topo, o->saved[t], HWLOC_CPUBIND_THREAD);
     }
-    /* Geometry: pass 1's counts, and those of the reference stages (squares that need clipping,
-     * generic triangles) once, from the first band that ran (every band runs the same ones);
-     * fragments: pass 1's tiny triangles and every band's rows; written: every band's. */
+    /* Terrain: every run's counts (each block drawn once). Water: the geometry of its reference
+     * stages once, from the first band that ran (every band runs the same ones); fragments and
+     * writes from every band, each counting its own rows. */
     memset(&mc->st, 0, sizeof mc->st);
-    int first = -1, rec_oom = 0;
+    int first = -1;
     for (int t = 0; t < T; t++) {
-        const retro_mesh_stats *b = &o->sub[t]->st;
-        add_geometry(&mc->st, &o->geo[t]);
-        mc->st.fragments += o->geo[t].fragments + b->fragments;
+        const retro_mesh_stats *a = &o->terrain[t], *b = &o->sub[t]->st;
+        add_geometry(&mc->st, a);
+        mc->st.fragments += b->fragments;
         mc->st.written += b->written;
         mc->oom |= o->sub[t]->oom;
-        rec_oom |= o->rec[t].oom;
-        if (first < 0 && o->cut[t] + 1 <= o->cut[t + 1])
+        const int lo = (int)((int64_t)mc->f.H * t / T) + 1, hi = (int)((int64_t)mc->f.H * (t + 1) / T);
+        if (first < 0 && lo <= hi)
             first = t;
     }
-    if (first >= 0)
-        add_geometry(&mc->st, &o->sub[first]->st);
-    if (rec_oom) {
-        strcpy(mc->err, "out of memory");
-        return RETRO_MESH_ENOMEM;
+    if (first >= 0) {
+        retro_mesh_stats w = o->sub[first]->st;
+        const retro_mesh_stats *a = &o->terrain[first];
+        w.submitted -= a->submitted;
+        w.culled -= a->culled;
+        w.clipped_out -= a->clipped_out;
+        w.rasterized -= a->rasterized;
+        add_geometry(&mc->st, &w);
     }
+    if (water_oom)
+        mc->oom = 1;
     return RETRO_MESH_OK;
 }
