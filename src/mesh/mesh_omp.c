@@ -178,6 +178,14 @@ static void add_geometry(retro_mesh_stats *d, const retro_mesh_stats *s)
 }
 
 /* Appends thread u's water triangles to thread 0's list (run order); 0 when it cannot grow. */
+/* Thread t's band of water rows, [*lo, *hi] in the frame's 1-based rows; empty when *lo > *hi
+ * (more threads than rows). The draw and the stats must cut the same bands. */
+static void band_rows(int H, int t, int T, int *lo, int *hi)
+{
+    *lo = (int)((int64_t)H * t / T) + 1;
+    *hi = (int)((int64_t)H * (t + 1) / T);
+}
+
 static int append_water(retro_mesh_ctx *to, const retro_mesh_ctx *from)
 {
     if (!from->water_n)
@@ -274,8 +282,7 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
             s->water_n = o->sub[0]->water_n;
             s->depth = mc->depth;
             s->out = mc->out;
-            s->f.rlo = (int)((int64_t)mc->f.H * t / T) + 1;
-            s->f.rhi = (int)((int64_t)mc->f.H * (t + 1) / T);
+            band_rows(mc->f.H, t, T, &s->f.rlo, &s->f.rhi);
             if (s->f.rlo <= s->f.rhi)
                 mesh_water_draw(s);
 #pragma omp barrier
@@ -296,7 +303,8 @@ retro_mesh_err mesh_omp_render(retro_mesh_ctx *mc, int threads)
         mc->st.fragments += b->fragments;
         mc->st.written += b->written;
         mc->oom |= o->sub[t]->oom;
-        const int lo = (int)((int64_t)mc->f.H * t / T) + 1, hi = (int)((int64_t)mc->f.H * (t + 1) / T);
+        int lo, hi;
+        band_rows(mc->f.H, t, T, &lo, &hi);
         if (first < 0 && lo <= hi)
             first = t;
     }
