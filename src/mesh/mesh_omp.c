@@ -177,7 +177,6 @@ static void add_geometry(retro_mesh_stats *d, const retro_mesh_stats *s)
     d->rasterized += s->rasterized;
 }
 
-/* Appends thread u's water triangles to thread 0's list (run order); 0 when it cannot grow. */
 /* Thread t's band of water rows, [*lo, *hi] in the frame's 1-based rows; empty when *lo > *hi
  * (more threads than rows). The draw and the stats must cut the same bands. */
 static void band_rows(int H, int t, int T, int *lo, int *hi)
@@ -186,6 +185,7 @@ static void band_rows(int H, int t, int T, int *lo, int *hi)
     *hi = (int)((int64_t)H * (t + 1) / T);
 }
 
+/* Appends thread u's water triangles to thread 0's list (run order); 0 when it cannot grow. */
 static int append_water(retro_mesh_ctx *to, const retro_mesh_ctx *from)
 {
     if (!from->water_n)
