@@ -24,6 +24,36 @@ static inline uint64_t mrng(uint64_t *s)
     return *s >> 11;
 }
 
+/* The parameters of a random effect set that the mesh tests share: fog, sun, pitch and
+ * morph, drawn in this order so that a seed names the same case wherever it is used. Which
+ * effects are on is the caller's choice. */
+static inline void mrandom_fx_params(uint64_t *seed, retro_effects *fx, const uint8_t *morph)
+{
+    fx->fog_exp = (int)(mrng(seed) & 1);
+    fx->fog_start = 5;
+    fx->fog_end = 60;
+    fx->fog_density = 0.02f;
+    fx->sun[0] = -0.6f;
+    fx->sun[1] = 0.0f;
+    fx->sun[2] = 0.8f;
+    fx->ambient = 0.4f;
+    fx->diffuse = 0.8f;
+    fx->pitch = (int)(mrng(seed) % 21) - 10;
+    fx->morph_height = morph;
+    fx->morph_t = (float)(mrng(seed) % 101) / 100.0f;
+}
+
+/* A random set of the mesh family's own effects: a colour source, wireframe, no culling, each
+ * drawn in its own statement (the operands of | are unsequenced, so their draws would not be). */
+static inline unsigned mrandom_mesh_fx(uint64_t *seed)
+{
+    static const unsigned colour[3] = {0, RETRO_MESH_FX_TEXTURE, RETRO_MESH_FX_GOURAUD};
+    unsigned f = colour[mrng(seed) % 3];
+    f |= (mrng(seed) % 4 == 0) ? RETRO_MESH_FX_WIREFRAME : 0;
+    f |= (mrng(seed) % 3 == 0) ? RETRO_MESH_FX_NOCULL : 0;
+    return f;
+}
+
 typedef struct {
     int S;
     uint8_t *h;

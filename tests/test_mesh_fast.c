@@ -12,30 +12,17 @@ static const int thread_counts[3] = {1, 2, 3};
 
 static void random_fx(uint64_t *seed, retro_effects *fx, const uint8_t *morph, unsigned *mfx)
 {
-    static const unsigned colour[3] = {0, RETRO_MESH_FX_TEXTURE, RETRO_MESH_FX_GOURAUD};
     retro_effects_defaults(fx);
     fx->flags = (unsigned)mrng(seed) &
                 (RETRO_FX_FOG | RETRO_FX_SHADE | RETRO_FX_HORIZON | RETRO_FX_MORPH | RETRO_FX_WATER);
     if (mrng(seed) % 3 == 0) /* a third of the poses in the fast raster's own colour path */
         fx->flags &= ~(unsigned)(RETRO_FX_SHADE | RETRO_FX_WATER);
-    fx->fog_exp = (int)(mrng(seed) & 1);
-    fx->fog_start = 5;
-    fx->fog_end = 60;
-    fx->fog_density = 0.02f;
-    fx->sun[0] = -0.6f;
-    fx->sun[1] = 0.0f;
-    fx->sun[2] = 0.8f;
-    fx->ambient = 0.4f;
-    fx->diffuse = 0.8f;
-    fx->pitch = (int)(mrng(seed) % 21) - 10;
-    fx->morph_height = morph;
-    fx->morph_t = (float)(mrng(seed) % 101) / 100.0f;
+    mrandom_fx_params(seed, fx, morph);
     fx->water_level = (int)(mrng(seed) % 200);
     fx->water_color = 0x2040a000u;
     fx->water_alpha0 = 0.3f;
     fx->water_alpha_per_unit = 0.05f;
-    *mfx = colour[mrng(seed) % 3] | ((mrng(seed) % 4 == 0) ? RETRO_MESH_FX_WIREFRAME : 0u) |
-           ((mrng(seed) % 3 == 0) ? RETRO_MESH_FX_NOCULL : 0u);
+    *mfx = mrandom_mesh_fx(seed);
     if (mrng(seed) % 3 == 0)
         *mfx &= RETRO_MESH_FX_WIREFRAME | RETRO_MESH_FX_NOCULL;
 }

@@ -2,31 +2,11 @@
 #include "mesh_util.h"
 #include "retro.h"
 
-static unsigned random_mesh_fx(uint64_t *seed)
-{
-    static const unsigned colour[3] = {0, RETRO_MESH_FX_TEXTURE, RETRO_MESH_FX_GOURAUD};
-    unsigned f = colour[mrng(seed) % 3];
-    f |= (mrng(seed) % 4 == 0) ? RETRO_MESH_FX_WIREFRAME : 0;
-    f |= (mrng(seed) % 3 == 0) ? RETRO_MESH_FX_NOCULL : 0;
-    return f;
-}
-
 static void random_scene_fx(uint64_t *seed, retro_effects *fx, const uint8_t *morph)
 {
     retro_effects_defaults(fx);
     fx->flags = (unsigned)(mrng(seed) % 128) & (RETRO_FX_FOG | RETRO_FX_SHADE | RETRO_FX_HORIZON | RETRO_FX_MORPH);
-    fx->fog_exp = (int)(mrng(seed) & 1);
-    fx->fog_start = 5;
-    fx->fog_end = 60;
-    fx->fog_density = 0.02f;
-    fx->sun[0] = -0.6f;
-    fx->sun[1] = 0.0f;
-    fx->sun[2] = 0.8f;
-    fx->ambient = 0.4f;
-    fx->diffuse = 0.8f;
-    fx->pitch = (int)(mrng(seed) % 21) - 10;
-    fx->morph_height = morph;
-    fx->morph_t = (float)(mrng(seed) % 101) / 100.0f;
+    mrandom_fx_params(seed, fx, morph);
 }
 
 /* Painting back to front in grid order gives the z-buffer's bytes (docs/MESH.md, "Order"):
@@ -49,7 +29,7 @@ Test(mesh_kernels, painter_equals_zbuffer)
         ctx_t c = {W, H, S, (int)(mrng(&seed) % 120), MSKY, m.h, m.c, a};
         retro_effects fx;
         random_scene_fx(&seed, &fx, m2.h);
-        unsigned mfx = random_mesh_fx(&seed);
+        unsigned mfx = mrandom_mesh_fx(&seed);
         for (int cull = 0; cull < 2; cull++)
             for (int md = 0; md < RETRO_MESH_MODE_COUNT; md++) {
                 unsigned f = cull ? mfx & ~(unsigned)RETRO_MESH_FX_NOCULL : mfx | RETRO_MESH_FX_NOCULL;
