@@ -16,7 +16,7 @@ mkdir -p "$(dirname "$out")"
 # which also reads RETRO_ISA), so it is kept nowhere else.
 head="include/retro.h include/io/retro_scene.h src/voxel/frame.h src/effects/effects_bake.h src/voxel/hmax_cache.h
   src/voxel/simd_map.h src/core/ctx.h src/voxel/retro_internal.h src/voxel/kernels.h src/core/isa.h
-  src/core/env.h src/core/errf.h src/voxel/strips.h src/voxel/simd_common.h src/threads/pt_pool.h
+  src/core/env.h src/core/errf.h src/core/direction.h src/voxel/strips.h src/voxel/simd_common.h src/threads/pt_pool.h
   src/threads/chunk_runs.h src/threads/column_chunks.h
   src/voxel/frame.c src/core/ctx.c src/voxel/hmax_cache.c src/effects/effects_bake.c src/voxel/course_accum.c
   src/voxel/kernel_ybuffer.c src/voxel/simd_map.c src/core/cpu.c src/core/errf.c src/core/env.c src/voxel/strips.c"

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "direction.h"
 #include "mesh_internal.h"
 #include "retro.h"
 
@@ -78,20 +79,6 @@ static const char *isa_name(unsigned isa)
 }
 
 static const char *const fx_names[] = {"fog", "shade", "water", "bilinear", "lod", "horizon", "morph"};
-
-/* cos and sin of the angle as SEMANTICS.md step 1: multiples of 90 degrees exact. */
-static void direction(int angle, double *cs, double *sn)
-{
-    int a = angle % 360;
-    if (a < 0)
-        a += 360;
-    int q = a / 90, r = a % 90;
-    double rad = (double)r * 3.14159265358979323846 / 180.0;
-    double c0 = cos(rad), s0 = sin(rad);
-    static const double csign[4] = {1, -1, -1, 1}, ssign[4] = {1, 1, -1, -1};
-    *cs = csign[q] * ((q & 1) ? s0 : c0);
-    *sn = ssign[q] * ((q & 1) ? c0 : s0);
-}
 
 /* Every frame reads the whole map here: per-position minima and maxima over chunks of fixed
  * length, which the compiler turns into byte-vector operations, reduced once at the end. */
@@ -218,7 +205,7 @@ retro_mesh_err mesh_frame_setup(retro_mesh_ctx *mc, retro_mesh_kernel k, retro_m
     f->mfx = mfx;
     f->fxp = fx;
     double cs, sn;
-    direction(p->angle, &cs, &sn);
+    retro_direction(p->angle, &cs, &sn);
     f->cs = rn(f, cs);
     f->sn = rn(f, sn);
     double x0 = fmod((double)p->x, (double)S), y0 = fmod((double)p->y, (double)S);

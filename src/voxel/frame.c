@@ -8,6 +8,7 @@
 #include "retro.h"
 #include "retro_internal.h"
 #include "ctx.h"
+#include "direction.h"
 #include "effects_bake.h"
 #include "frame.h"
 #include "hmax_cache.h"
@@ -72,22 +73,6 @@ static double wrap(float v, int s)
     return r;
 }
 
-/* cos and sin of the angle in double; a quarter turn only swaps and negates, so multiples of
- * 90 degrees are exact. */
-static void direction(int angle, double *cs, double *sn)
-{
-    int a = angle % 360;
-    if (a < 0)
-        a += 360;
-    int q = a / 90, r = a % 90;
-    double rad = (double)r * 3.14159265358979323846 / 180.0;
-    double c0 = cos(rad), s0 = sin(rad);
-    static const int swap[4] = {0, 1, 0, 1};
-    static const double csign[4] = {1, -1, -1, 1}, ssign[4] = {1, 1, -1, -1};
-    *cs = csign[q] * (swap[q] ? s0 : c0);
-    *sn = ssign[q] * (swap[q] ? c0 : s0);
-}
-
 /* vcap over the frame's n-th distances (see retro_frame.vcap); row(n) projects hmax there. */
 static void cap_rows(retro_ctx *rc, int n, int (*row)(const retro_frame *, int, int64_t))
 {
@@ -129,7 +114,7 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle, const retro_ef
 {
     unsigned flags = fx ? fx->flags : 0;
     double cs, sn;
-    direction(angle, &cs, &sn);
+    retro_direction(angle, &cs, &sn);
     f->cs = (float)cs;
     f->sn = (float)sn;
 
@@ -169,7 +154,7 @@ static void setup_exact(retro_ctx *rc, retro_frame *f, int angle, const retro_ef
 
 static void setup_truth(retro_ctx *rc, retro_frame *f, const player_t *p)
 {
-    direction(p->angle, &f->cs_d, &f->sn_d);
+    retro_direction(p->angle, &f->cs_d, &f->sn_d);
     f->x0_d = wrap(p->x, f->S);
     f->y0_d = wrap(p->y, f->S);
     int W = f->W;
