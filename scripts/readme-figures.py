@@ -160,10 +160,20 @@ def digest_commit(digest):
     return None
 
 
-def code_sentence(commit, digest, build):
+def source_gone(obj, repo):
+    """Whether the run's object obj (a path under the build, "src/x/y.o") has no source left in
+    repo: the file was deleted, so no build of this tree can have the object."""
+    import os
+    stem = os.path.join(repo, obj[:-2]) if repo else None
+    return bool(stem) and not any(os.path.exists(stem + ext) for ext in (".c", ".cc", ".cpp"))
+
+
+def code_sentence(commit, digest, build, repo=None):
     """What the run's objects compile to now: '' when there is no digest of the run's commit
     (the block then counts commits alone), None when there is one but no build to compare with
-    (an object missing, or built with another compiler or other flags, as make asan's are)."""
+    (an object missing whose source is still in repo, or built with another compiler or other
+    flags, as make asan's are). Objects whose source was deleted since the run are named as
+    gone, so a removed file does not leave the block unchecked."""
     import os
     if not digest or not os.path.exists(digest):
         return ""
@@ -172,18 +182,27 @@ def code_sentence(commit, digest, build):
         return ""
     import code_digest
     r = code_digest.compare(digest, build) if build and os.path.isdir(build) else None
-    if r is None or r[2] or r[4]:
+    if r is None or r[4] or not all(source_gone(o, repo) for o in r[2]):
         return None
-    changed, same = r[0], r[3]
-    n = len(changed) + len(same)
-    if not changed:
+    changed, gone, same = r[0], r[2], r[3]
+    n = len(changed) + len(gone) + len(same)
+    if not changed and not gone:
         return (f" Built now, all {n} objects of the run's build are its machine code byte for byte "
                 "(`scripts/code_digest.py`): the figures hold for this code.")
     # the library's objects first, then the CLI's, then the benchmark harness's
-    changed = sorted(changed, key=lambda o: (o.startswith("src/cli/") + 2 * o.startswith("bench/"), o))
-    shown = ", ".join(f"`{o[:-2]}`" for o in changed[:12]) + (", …" if len(changed) > 12 else "")
-    return (f" Built now, {len(changed)} of the run's {n} objects compile to other machine code ({shown}); "
-            f"the other {len(same)} are the run's code byte for byte (`scripts/code_digest.py`).")
+    order = lambda o: (o.startswith("src/cli/") + 2 * o.startswith("bench/"), o)
+    changed = sorted(changed, key=order)
+    parts = []
+    if changed:
+        shown = ", ".join(f"`{o[:-2]}`" for o in changed[:12]) + (", …" if len(changed) > 12 else "")
+        parts.append(f"{len(changed)} of the run's {n} objects compile to other machine code ({shown})")
+    if gone:
+        shown = ", ".join(f"`{o[:-2]}`" for o in sorted(gone, key=order)[:12]) + (", …" if len(gone) > 12 else "")
+        verb = "has" if len(gone) == 1 else "have"
+        whose = "" if changed else f" of the run's {n} objects"
+        parts.append(f"{len(gone)}{whose} {verb} no source any more ({shown})")
+    return (f" Built now, {' and '.join(parts)}; the other {len(same)} are the run's code byte for byte "
+            "(`scripts/code_digest.py`).")
 
 
 def since_commit(commit, repo, digest=None, build=None):
@@ -196,7 +215,7 @@ def since_commit(commit, repo, digest=None, build=None):
                              capture_output=True, text=True, check=True).stdout.splitlines()
     except (OSError, subprocess.CalledProcessError):
         return None
-    code = code_sentence(commit, digest, build)
+    code = code_sentence(commit, digest, build, repo)
     if not log:
         same = f"The kernel sources (`src/`, `include/`) are those of the run's commit `{commit[:7]}`."
         # the same sources can still build to other code (another compiler, other flags): say so

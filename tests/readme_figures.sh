@@ -90,6 +90,34 @@ if [ -f results/bench-code.txt ]; then
   fi
 fi
 
+# An object of the run whose source has since been deleted is named in the block, so a removed
+# file does not leave it unchecked; one whose source is still here but is missing from the build
+# (a partial build) leaves the block unchecked.
+if [ -f results/bench-code.txt ] && [ "${comparable:-0}" = 1 ]; then
+  mkdir -p "$tmp/gone"
+  cp results/BENCH.md results/bench.json results/ACCURACY.md "$tmp/gone/"
+  [ -f results/accuracy-code.txt ] && cp results/accuracy-code.txt "$tmp/gone/"
+  awk '$1 ~ /\.o$/ && !done { print "src/voxel/retired_by_test.o 0123456789abcdef " $3; done = 1 } { print }' \
+    results/bench-code.txt >"$tmp/gone/bench-code.txt"
+  out=$(python3 scripts/readme-figures.py --check "$tmp/gone" README.md 2>&1)
+  case $out in
+    *"+**The kernels changed after this run:**"*"no source any more (\`src/voxel/retired_by_test\`)"*) ;;
+    *) echo "FAIL: a run's object whose source was deleted is not named: $out" | head -c 900; exit 1 ;;
+  esac
+  # the same build without one object whose source is still here: hard links, so no copy
+  part="$RETRO_BUILD/.readme-figures-partial.$$"
+  trap 'rm -rf "$tmp" "$part"' EXIT
+  mkdir -p "$part"
+  for d in src tools bench; do [ -d "$RETRO_BUILD/$d" ] && cp -al "$RETRO_BUILD/$d" "$part/"; done
+  rm -f "$part/src/voxel/frame.o"
+  out=$(RETRO_BUILD=$part python3 scripts/readme-figures.py --check results README.md 2>&1)
+  rm -rf "$part"
+  case $out in
+    *"bench:since block is not checked"*) ;;
+    *) echo "FAIL: a build missing an object whose source is present was compared: $out" | head -c 900; exit 1 ;;
+  esac
+fi
+
 # Issue 18's blocks, from a run that has them: the committed BENCH.md with a large-frame table
 # and the submission's spread added in retro-bench's format, and the per-column counts.
 run="$tmp/run"
@@ -307,4 +335,4 @@ echo d >"$repo/src/k.c" && git -C "$repo" add -A && git -C "$repo" commit -qm ke
 if python3 scripts/readme-figures.py --check "$repo/results" "$repo/README.md" >/dev/null; then
   echo "FAIL: a README that misses a kernel commit after its run passes the check"; exit 1
 fi
-echo "ok: README figures match the committed run, and a changed figure is caught; the omp target's verdict follows its geometric mean; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run, and the objects whose code changed, are named"
+echo "ok: README figures match the committed run, and a changed figure is caught; the omp target's verdict follows its geometric mean; issue 18's blocks are generated; the run's noise warning, steadiness and re-timing are carried over; kernel commits after the run, the objects whose code changed and those whose source is gone, are named"
