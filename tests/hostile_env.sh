@@ -16,6 +16,12 @@ done
 for v in 0 -1 65 abc '' ' 2' 2x +2 0x2 99999999999999999999; do
   bad "RETRO_PTHREADS='$v'" env RETRO_PTHREADS="$v" $R -k pthreads -o OUT
 done
+for v in 3 65 0 -1 abc '' ' 16' 16x 0x10 99999999999999999999; do
+  bad "RETRO_CONE_SECTORS='$v'" env RETRO_CONE_SECTORS="$v" $R -o OUT
+done
+for v in 0 257 -1 abc '' ' 8' 8x 99999999999999999999; do
+  bad "RETRO_CONE_R='$v'" env RETRO_CONE_R="$v" $R -o OUT
+done
 for v in bogus '' AVX2 'sse2 ' 'avx2
 x'; do
   bad "RETRO_ISA='$v'" env RETRO_ISA="$v" $R -o OUT

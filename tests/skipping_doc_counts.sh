@@ -1,6 +1,6 @@
 #!/bin/sh
 # docs/SKIPPING.md's tables of counts ("How far a max bound can go": lanes walking alone; "Other
-# bounds at the same granularity"; "Window or schedule"; "Modes truth and fixed") against
+# bounds at the same granularity"; "Window or schedule"; "Cone steps"; "Modes truth and fixed") against
 # `retro render --stats` of the same frames, rendered here. Counts are exact and the same on any
 # machine, so a change to the walk, the probe or the counting that moves one fails this test
 # until the table is written again from --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
@@ -140,6 +140,44 @@ row_check() {
   done
 }
 each_row '| scene | exact | truth | fixed |'
+
+# "Cone steps": the three cone walks beside the bounds they are set against
+# cone WHICH: the cone steps line's share for walk WHICH (alone, pyramid, ideal)
+cone() {
+  pick 's/^cone steps ([0-9]* sectors, radius [0-9]* cells) evaluate: //p' "$s" |
+    awk -v w="$1" -F', ' '{ i = w == "alone" ? 1 : w == "pyramid" ? 2 : 3; v = $i; sub(/%.*/, "", v); print v }'
+}
+row_check() {
+  check "$label, painting" "$1" "$(pick 's/^painting: [0-9]* (\([0-9.]*\)%)$/\1/p' "$s")"
+  check "$label, one probe per sample" "$2" "$(part "one probe per sample")"
+  check "$label, ideal max" "$3" "$(pick 's/^ideal max bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, oracle" "$4" "$(pick 's/^ideal oracle bound evaluates: \([0-9.]*\)% with blocks down to 4 cells.*/\1/p' "$s")"
+  check "$label, cone steps alone" "$5" "$(cone alone)"
+  check "$label, cones and the pyramid" "$6" "$(cone pyramid)"
+  check "$label, cones and the ideal max" "$7" "$(cone ideal)"
+}
+each_row '| scene | painting | one probe per sample | ideal max | oracle | cone steps alone | cones and the pyramid | cones and the ideal max |'
+
+# the cone map's shapes on pyramids, 640×480, D 800 (RETRO_CONE_SECTORS, RETRO_CONE_R)
+if [ -d "$course" ]; then
+  rows '| sectors | radius | cone steps alone | cones and the pyramid | cones and the ideal max |' >"$tmp/rows"
+  [ -s "$tmp/rows" ] || fail "$doc has no table of the cone map's shapes"
+  while IFS= read -r line; do
+    set -- $(printf '%s' "$line" | awk -F'|' '{ for (i = 2; i < NF; i++) { gsub(/[ %]/, "", $i); printf "%s ", $i } }')
+    label="pyramids, $1 sectors, radius $2"
+    s=$tmp/cone-$1-$2.txt
+    # shellcheck disable=SC2046
+    RETRO_CONE_SECTORS=$1 RETRO_CONE_R=$2 "$retro" render $(bench_scene_args pyramids "$course") -s 640x480 -d 800 \
+      --stats -o "$tmp/frame.ppm" >"$s" 2>"$tmp/err" || fail "$label: --stats: $(tail -n 1 "$tmp/err")"
+    grep -q "^cone steps ($1 sectors, radius $2 cells)" "$s" || fail "$label: --stats did not take the shape"
+    check "$label, alone" "$3" "$(cone alone)"
+    check "$label, cones and the pyramid" "$4" "$(cone pyramid)"
+    check "$label, cones and the ideal max" "$5" "$(cone ideal)"
+    checked=$((checked + 1))
+  done <"$tmp/rows"
+else
+  case " $skipped " in *" pyramids "*) ;; *) skipped="$skipped pyramids" ;; esac
+fi
 
 [ -z "$skipped" ] || echo "skip: $course absent: rows of$skipped not checked"
 [ "$checked" -gt 0 ] || fail "no row of $doc's count tables was checked"

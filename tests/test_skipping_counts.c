@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cone_map.h"
 #include "ctx.h"
 #include "frame.h"
 #include "hmax_pyramid.h"
@@ -348,6 +349,34 @@ Test(skipping, walk_parts)
     study_frames(walk_parts_case);
 }
 
+/* The cone steps' study (cone_map.h) on one frame: exact alone, with the pyramid's probe and
+ * with the ideal max bound's, and where the frame is one the map serves (mode exact, plain samples), it skips. */
+static void cone_case(const study_frame *f)
+{
+    retro_cone_map cm;
+    cr_assert_eq(retro_cone_build(&cm, f->m->height, f->m->size, 16, 16), 0);
+    static const char *const walks[] = {"cone steps", "cone steps and the pyramid", "cone steps and the ideal max bound"};
+    for (int v = 0; v < 3; v++) {
+        retro_skip_cone = &cm;
+        retro_skip_cone_pyramid = v > 0;
+        retro_skip_ideal = v == 2 ? RETRO_PYR_LMIN : -1;
+        retro_sample_counts s = study_walk(f, walks[v]);
+        retro_skip_cone = NULL;
+        retro_skip_cone_pyramid = 0;
+        retro_skip_ideal = -1;
+        const retro_frame *fr = retro_ctx_frame(f->rc);
+        if (retro_cone_applies(&cm, fr))
+            cr_assert_lt(s.evaluated, (uint64_t)f->W * (uint64_t)(f->D - 1), "%s: cone steps skipped nothing",
+                         f->what);
+    }
+    retro_cone_free(&cm);
+}
+
+Test(skipping, cone_steps)
+{
+    study_frames(cone_case);
+}
+
 /* Square pyramids of side 64 on flat ground, each face a plane of slope 3: the terrain where a
  * plane bounds a box of cells more tightly than its maximum. */
 static void pyramid_map(retro_map *m, int S)
@@ -486,6 +515,58 @@ Test(skipping, probe_bound)
         retro_map_free(&m);
     }
     cr_assert_gt(skipped, 1000, "the probes skipped almost nothing (%ld distances)", skipped);
+}
+
+/* The cone step on its own (cone_map.h): for random frames, columns, distances and y-buffers,
+ * every distance retro_cone_step jumps over has a row at or below y (brute force from the
+ * sample's own cell), across spikes, the seam, sizes that are not powers of two, D up to 6 S,
+ * and sector counts and radii from the smallest to far beyond the map's side. */
+Test(skipping, cone_step_bound)
+{
+    static const int sizes[] = {5, 6, 37, 64, 100, 129};
+    static const int shapes[][2] = {{4, 1}, {16, 8}, {64, 32}, {16, 200}};
+    uint64_t st = 4242;
+    long skipped = 0, queries = 0;
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        const int S = sizes[si];
+        retro_map m;
+        spiky_map(&m, S, 77 + (uint64_t)S, &st);
+        uint32_t out[1];
+        retro_ctx *rc = retro_ctx_new();
+        cr_assert(rc);
+        retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
+        for (size_t sh = 0; sh < sizeof shapes / sizeof shapes[0]; sh++) {
+            retro_cone_map cm;
+            cr_assert_eq(retro_cone_build(&cm, m.height, S, shapes[sh][0], shapes[sh][1]), 0);
+            for (int frame = 0; frame < 15; frame++) {
+                const retro_frame *f = random_frame(rc, &o, &m, 6, out, &st);
+                if (!retro_cone_applies(&cm, f))
+                    continue;
+                const int W = f->W, H = f->H, D = f->D;
+                for (int q = 0; q < 60; q++) {
+                    const int u = (int)(rng_next(&st) % (unsigned)W), e0 = 1 + (int)(rng_next(&st) % (unsigned)(D - 1));
+                    const int yb = (int)(rng_next(&st) % (unsigned)H);
+                    const size_t idx = retro_exact_sample(f, u, e0);
+                    const int k = retro_cone_step(&cm, f, retro_cone_sector(&cm, f->rx[u], f->ry[u]), f->rx[u],
+                                                  f->ry[u], idx, f->height_map[idx], e0, D, yb);
+                    cr_assert(k >= 0 && e0 + k < D, "a step of %d from %d (D %d)", k, e0, D);
+                    for (int e = e0 + 1; e <= e0 + k; e++) {
+                        const size_t ci = retro_exact_sample(f, u, e);
+                        const int v = retro_exact_row(f->kd[e], f->half_h, H, f->height_map[ci] - f->height);
+                        cr_assert_leq(v, yb, "S %d, %d sectors, radius %d: column %d jumped from %d over %d, row %d above %d",
+                                      S, cm.sectors, cm.R, u, e0, e, v, yb);
+                    }
+                    skipped += k;
+                    queries++;
+                }
+            }
+            retro_cone_free(&cm);
+        }
+        retro_ctx_free(rc);
+        retro_map_free(&m);
+    }
+    cr_assert_gt(queries, 1000, "too few frames the cone maps serve (%ld queries)", queries);
+    cr_assert_gt(skipped, 1000, "the cone steps skipped almost nothing (%ld distances)", skipped);
 }
 
 /* The probe of modes truth and fixed on its own (skip_wide.h), as probe_bound checks mode

@@ -5,7 +5,9 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cone_map.h"
 #include "ctx.h"
+#include "env.h"
 #include "hmax_pyramid.h"
 #include "isa.h"
 #include "kernels.h"
@@ -165,6 +167,61 @@ static int print_walk_parts(render_job *j, const retro_kernel *counted, const pl
     return 0;
 }
 
+/* The cone steps' study (docs/SKIPPING.md, "Cone steps"): the share of all (W x (D-1)) the
+ * column walk evaluates by cone steps alone, with the pyramid's probe before every sample too,
+ * and with the ideal max bound's probe (blocks down to 4 cells) instead, for frames of mode exact
+ * with plain samples (cone_map.h). RETRO_CONE_SECTORS and RETRO_CONE_R set the map's shape
+ * (checked with the other variables at start-up: src/core/env.c). Returns 0 or CLI_EBADINPUT. */
+static int print_cone_steps(render_job *j, const retro_kernel *counted, const player_t *p, double all)
+{
+    const retro_frame *f = retro_ctx_frame(j->rc);
+    if (!retro_skip_applies(f) || f->mode != RETRO_MODE_EXACT || (f->fx & RETRO_FX_BILINEAR))
+        return 0;
+    long sectors = RETRO_CONE_SECTORS_DEFAULT, R = RETRO_CONE_R_DEFAULT;
+    char err[160];
+    if (retro_env_long("RETRO_CONE_SECTORS", RETRO_CONE_SECTORS_MIN, RETRO_CONE_SECTORS_MAX, &sectors, err,
+                       sizeof err) < 0 ||
+        retro_env_long("RETRO_CONE_R", 1, RETRO_CONE_R_MAX, &R, err, sizeof err) < 0)
+        return cli_error("render", "%s", err);
+    /* a study's map of 5 bytes per cell and sector: past 1 GiB it is not built, so that --stats
+     * on a large map stays quick */
+    const double bytes = 5.0 * (double)f->S * (double)f->S * (double)sectors;
+    if (bytes > 1024.0 * 1024.0 * 1024.0) {
+        printf("cone steps: not for this map (%ld sectors would take %.0f MiB)\n", sectors, bytes / 1048576.0);
+        return 0;
+    }
+    retro_cone_map m;
+    if (retro_cone_build(&m, f->height_map, f->S, (int)sectors, (int)R))
+        return cli_error("render", "out of memory");
+    if (!retro_cone_applies(&m, f)) {
+        retro_cone_free(&m);
+        printf("cone steps: not for this frame (a column's step is too short or its positions round too far)\n");
+        return 0;
+    }
+    static const char *const with[] = {"alone", "with the pyramid's probe before every sample",
+                                       "with the ideal max bound's (blocks down to 4 cells)"};
+    printf("cone steps (%ld sectors, radius %ld cells) evaluate:", sectors, R);
+    for (int v = 0; v < 3; v++) {
+        memset(&retro_ybuffer_counts, 0, sizeof retro_ybuffer_counts);
+        retro_skip_cone = &m;
+        retro_skip_cone_pyramid = v > 0;
+        retro_skip_ideal = v == 2 ? RETRO_PYR_LMIN : -1;
+        retro_err e = retro_render(j->rc, counted, &j->opts, p, &j->c);
+        retro_skip_cone = NULL;
+        retro_skip_cone_pyramid = 0;
+        retro_skip_ideal = -1;
+        if (e) {
+            retro_cone_free(&m);
+            return cli_error("render", "%s", retro_strerror(e));
+        }
+        printf("%s %.2f%% %s", v ? "," : "", all > 0 ? 100.0 * (double)retro_ybuffer_counts.evaluated / all : 0.0,
+               with[v]);
+    }
+    printf("\n");
+    retro_cone_free(&m);
+    return 0;
+}
+
 /* The frame rendered again by the counting build of ybuffer (the same bytes, into the same
  * buffer), and its counts. Returns 0 or CLI_EBADINPUT. */
 static int print_stats(render_job *j, const player_t *p)
@@ -210,6 +267,8 @@ static int print_stats(render_job *j, const player_t *p)
         printf("\n");
     }
     int r;
+    if ((r = print_cone_steps(j, &counted, p, all)))
+        return r;
     if (retro_skip_applies(f) && (r = print_walk_parts(j, &counted, p, all)))
         return r;
     if (retro_skip_applies(f) && (r = print_lanes_alone(j, p, all)))

@@ -77,6 +77,12 @@ int retro_env_check(char *err, size_t n)
         return -1;
     if (retro_env_long("RETRO_PTHREADS", 1, RETRO_PTHREADS_MAX, &chunk, err, n) < 0)
         return -1;
+#ifndef RETRO_SUBMISSION /* the submission has no --stats */
+    if (retro_env_long("RETRO_CONE_SECTORS", RETRO_CONE_SECTORS_MIN, RETRO_CONE_SECTORS_MAX, &chunk, err, n) < 0)
+        return -1;
+    if (retro_env_long("RETRO_CONE_R", 1, RETRO_CONE_R_MAX, &chunk, err, n) < 0)
+        return -1;
+#endif
     if (shared && (!*shared || strlen(shared) > RETRO_SHARED_MAX))
         return retro_errf(err, n, "environment: RETRO_SHARED must be a folder's path of 1..%d bytes",
                    RETRO_SHARED_MAX);

@@ -106,6 +106,12 @@ extern int retro_skip_ideal_kind;
  * boxes hold every cell the run samples). Global like the counts. */
 enum { RETRO_WINDOW_BLOCKS, RETRO_WINDOW_OWN_BOX, RETRO_WINDOW_UNALIGNED };
 extern int retro_skip_window, retro_skip_every;
+/* The cone steps' study (cone_map.h): when set, the counting ybuffer walks mode exact's plain
+ * frames by cone steps from this map (the frame's own map, built by the caller), and with
+ * retro_skip_cone_pyramid probes the pyramid before every sample too. Global like the counts. */
+struct retro_cone_map;
+extern const struct retro_cone_map *retro_skip_cone;
+extern int retro_skip_cone_pyramid;
 
 /* Whether the ybuffer strip skips this frame: mode exact or lod with a pyramid (any
  * per-sample effects: fog changes colours only, bilinear is covered by the bound). */

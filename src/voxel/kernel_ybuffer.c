@@ -41,12 +41,15 @@
 #endif
 
 #ifdef RETRO_COUNT_SAMPLES
+#include "cone_map.h"
 #include "ybuffer_columns.h"
 retro_sample_counts retro_ybuffer_counts;
 retro_column_counts *retro_ybuffer_columns;
 int retro_skip_ideal = -1;
 int retro_skip_ideal_kind = RETRO_IDEAL_MAX;
 int retro_skip_window = RETRO_WINDOW_BLOCKS, retro_skip_every = 0;
+const retro_cone_map *retro_skip_cone;
+int retro_skip_cone_pyramid;
 #define IDEAL_ONE_BY_ONE (retro_skip_ideal >= 0 || retro_skip_every)
 /* Every use has the sample's column in u. */
 #define COUNT_EVAL()                                                                               \
@@ -262,6 +265,53 @@ static inline __attribute__((always_inline)) void batch_cells(const retro_frame 
     }
 }
 
+#ifdef RETRO_COUNT_SAMPLES
+/* The cone steps' study (cone_map.h, docs/SKIPPING.md "Cone steps"): columns [c0, c1) of mode
+ * exact, plain samples, each walked nearest first; after every sample it evaluates, the column
+ * jumps over the distances retro_cone_step proves hidden. With retro_skip_cone_pyramid, the
+ * pyramid is probed before every sample too (retro_skip_run, one sample at a time), and the
+ * walk takes the longer of the two jumps. Exact, so the frame is naive's. */
+static void columns_cone(const retro_frame *f, int c0, int c1, const int kind, const int fog)
+{
+    const int W = f->W, H = f->H, S = f->S;
+    const int *vcap = f->vcap;
+    const int n_end = f->D;
+    const retro_cone_map *m = retro_skip_cone;
+    uint32_t *out = f->out;
+    for (int u = c0; u < c1; u++) {
+        retro_skip_col col;
+        retro_skip_col_init(&col, f, u);
+        const float rx = col.rx, ry = col.ry;
+        const int sigma = retro_cone_sector(m, rx, ry);
+        int y = 0, n = 1;
+        while (n < n_end && y < vcap[n]) {
+            if (retro_skip_cone_pyramid) {
+                const int e = retro_skip_run(f->pyr, f, &col, n, n_end, y, kind == KIND_EXACT_POW2, 0, NULL);
+                if (e > n) {
+                    n = e;
+                    continue;
+                }
+            }
+            const float fd = (float)n, qx = f->x0 + fd * rx, qy = f->y0 + fd * ry;
+            const size_t idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
+            const int h0 = f->height_map[idx];
+            const float vf = f->kd[n] * (float)(h0 - f->height) + f->half_h;
+            COUNT_EVAL();
+            if (vf >= (float)(y + 1)) {
+                const int v = vf >= (float)H ? H : (int)vf;
+                const uint32_t c = f->color_map[idx];
+                COUNT_PAINT();
+                y = span(out, W, H, u, y, v, fog ? retro_fog(c, f->sky, f->fog[n]) : c);
+                if (y >= H)
+                    break;
+            }
+            n += 1 + retro_cone_step(m, f, sigma, rx, ry, idx, h0, n, n_end, y);
+        }
+        span(out, W, H, u, y, H, f->sky);
+    }
+}
+#endif
+
 /* Columns [c0, c1) of mode exact or lod with skipping, each walked nearest first: the pyramid
  * is probed (retro_skip_run) at every sample the walk reaches, and where it cannot skip the
  * next RETRO_SKIP_NEAR samples are evaluated in two passes, their cells and vf first (sample()'s
@@ -281,6 +331,12 @@ static inline __attribute__((always_inline)) void columns_skip(const retro_frame
     const float x0 = f->x0, y0 = f->y0, half_h = f->half_h;
     const int64_t height = f->height;
     uint32_t *out = f->out;
+#ifdef RETRO_COUNT_SAMPLES
+    if (retro_skip_cone && kind != KIND_LOD && !bilinear && retro_cone_applies(retro_skip_cone, f)) {
+        columns_cone(f, c0, c1, kind, fog);
+        return;
+    }
+#endif
     for (int u = c0; u < c1; u++) {
         retro_skip_col col;
         retro_skip_col_init(&col, f, u);
