@@ -19,7 +19,7 @@ done
 for v in 3 65 0 -1 abc '' ' 16' 16x 0x10 99999999999999999999; do
   bad "RETRO_CONE_SECTORS='$v'" env RETRO_CONE_SECTORS="$v" $R -o OUT
 done
-for v in 0 257 -1 abc '' ' 8' 8x 99999999999999999999; do
+for v in 0 33 -1 abc '' ' 8' 8x 99999999999999999999; do
   bad "RETRO_CONE_R='$v'" env RETRO_CONE_R="$v" $R -o OUT
 done
 for v in bogus '' AVX2 'sse2 ' 'avx2

@@ -13,7 +13,7 @@
 /* The cone steps' study (src/voxel/cone_map.h): RETRO_CONE_SECTORS's and RETRO_CONE_R's ranges. */
 #define RETRO_CONE_SECTORS_MIN 4
 #define RETRO_CONE_SECTORS_MAX 64
-#define RETRO_CONE_R_MAX 256
+#define RETRO_CONE_R_MAX 32
 /* RETRO_SHARED's longest accepted value: room for "/course/NAME" in 512-byte paths. */
 #define RETRO_SHARED_MAX 400
 
