@@ -434,6 +434,15 @@ static void spiky_map(retro_map *m, int S, uint64_t seed, uint64_t *st)
         m->height[rng_next(st) % ((uint64_t)S * (uint64_t)S)] = (uint8_t)(200 + k * 20);
 }
 
+/* The probe tests' map of side S (spiky_map from seed) and a context to render it with. */
+static retro_ctx *probe_setup(retro_map *m, int S, uint64_t seed, uint64_t *st)
+{
+    spiky_map(m, S, seed, st);
+    retro_ctx *rc = retro_ctx_new();
+    cr_assert(rc);
+    return rc;
+}
+
 /* A random frame of map m (side S) for the probe tests: screen up to 200 x 300, D up to
  * dmul * S, a position within a map's side of the origin (negative x too), any angle, camera
  * heights from below the ground to above the highest cell; o sets the mode. */
@@ -465,10 +474,8 @@ Test(skipping, probe_bound)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         int S = sizes[si];
         retro_map m;
-        spiky_map(&m, S, 31 + (uint64_t)S, &st);
+        retro_ctx *rc = probe_setup(&m, S, 31 + (uint64_t)S, &st);
         uint32_t out[1];
-        retro_ctx *rc = retro_ctx_new();
-        cr_assert(rc);
         retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
         for (int frame = 0; frame < 60; frame++) {
             const retro_frame *f = random_frame(rc, &o, &m, 6, out, &st);
@@ -530,10 +537,8 @@ Test(skipping, cone_step_bound)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         const int S = sizes[si];
         retro_map m;
-        spiky_map(&m, S, 77 + (uint64_t)S, &st);
+        retro_ctx *rc = probe_setup(&m, S, 77 + (uint64_t)S, &st);
         uint32_t out[1];
-        retro_ctx *rc = retro_ctx_new();
-        cr_assert(rc);
         retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
         for (size_t sh = 0; sh < sizeof shapes / sizeof shapes[0]; sh++) {
             retro_cone_map cm;
@@ -582,10 +587,8 @@ Test(skipping, probe_bound_wide)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         const int S = sizes[si];
         retro_map m;
-        spiky_map(&m, S, 53 + (uint64_t)S, &st);
+        retro_ctx *rc = probe_setup(&m, S, 53 + (uint64_t)S, &st);
         uint32_t out[1];
-        retro_ctx *rc = retro_ctx_new();
-        cr_assert(rc);
         for (int frame = 0; frame < 60; frame++) {
             const int fixed = frame & 1;
             retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
@@ -690,10 +693,8 @@ Test(skipping, probe_bound_lod)
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         int S = sizes[si];
         retro_map m;
-        spiky_map(&m, S, 71 + (uint64_t)S, &st);
+        retro_ctx *rc = probe_setup(&m, S, 71 + (uint64_t)S, &st);
         uint32_t out[1];
-        retro_ctx *rc = retro_ctx_new();
-        cr_assert(rc);
         for (int frame = 0; frame < 60; frame++) {
             retro_render_opts o = RETRO_RENDER_OPTS_DEFAULT;
             o.mode = RETRO_MODE_LOD;
