@@ -273,7 +273,7 @@ static inline __attribute__((always_inline)) void batch_cells(const retro_frame 
  * walk takes the longer of the two jumps. Exact, so the frame is naive's. */
 static void columns_cone(const retro_frame *f, int c0, int c1, const int kind, const int fog)
 {
-    const int W = f->W, H = f->H, S = f->S;
+    const int W = f->W, H = f->H;
     const int *vcap = f->vcap;
     const int n_end = f->D;
     const retro_cone_map *m = retro_skip_cone;
@@ -292,8 +292,7 @@ static void columns_cone(const retro_frame *f, int c0, int c1, const int kind, c
                     continue;
                 }
             }
-            const float fd = (float)n, qx = f->x0 + fd * rx, qy = f->y0 + fd * ry;
-            const size_t idx = (size_t)retro_cell(qy, S) * (size_t)S + (size_t)retro_cell(qx, S);
+            const size_t idx = retro_exact_sample(f, u, n);
             const int h0 = f->height_map[idx];
             const float vf = f->kd[n] * (float)(h0 - f->height) + f->half_h;
             COUNT_EVAL();
