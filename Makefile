@@ -313,7 +313,7 @@ bench: deps ## time every kernel (mode exact also with skipping off), scene and 
 	$(Q)$(call CODE_DIGEST,bench-code.txt,$(RETRO) $(BENCH_BIN))
 
 .PHONY: study-replay
-study-replay: deps ## where a skipping frame's time goes, by replaying probes and stores: RESULTS/study-replay.md (docs/SKIPPING.md)
+study-replay: deps ## where a skipping frame's time goes, by replaying probes and stores: RESULTS/study-replay.md (docs/studies/SKIPPING_LIMITS.md)
 	$(Q)mkdir -p $(RESULTS)
 	$(Q)sh scripts/study-replay.sh --shared $(SHARED) -o $(RESULTS)/study-replay.md
 # --- end of benchmark block ---------------------------------------------------------------

@@ -468,11 +468,11 @@ def skipping_block(byname, scenes, ms, geo, t, raw_json):
                     + " in the same run" + (f": above 35% on {', '.join(over)}{over_tail}." if over else "."))
         if ideal:
             lines.append(bound_line(ideal, "An ideal max bound (each run bounded by its own cells, not a block window, "
-                                    "down to blocks of 4 cells, a probe before every sample; docs/SKIPPING.md, "
+                                    "down to blocks of 4 cells, a probe before every sample; docs/studies/SKIPPING_LIMITS.md, "
                                     "\"How far a max bound can go\")", 0, " even so"))
         if oracle:
             lines.append(bound_line(oracle, "With the same runs, an oracle that skips exactly the runs none of whose "
-                                    "samples paints (what any bound at all could do; docs/SKIPPING.md, \"Other "
+                                    "samples paints (what any bound at all could do; docs/studies/SKIPPING_LIMITS.md, \"Other "
                                     "bounds at the same granularity\")", 1, ""))
     return "\n".join(lines)
 

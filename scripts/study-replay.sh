@@ -1,6 +1,7 @@
 #!/bin/sh
-# The replay study of docs/SKIPPING.md ("What the probes cost", "What the stores cost"): how a
-# skipping frame of simd-avx512 splits between probing, the sample walk and the stores.
+# The replay study of docs/studies/SKIPPING_LIMITS.md ("What the probes cost", "What the stores
+# cost"): how a skipping frame of simd-avx512 splits between probing, the sample walk and the
+# stores.
 usage() {
   cat <<'EOF'
 usage: scripts/study-replay.sh [-n N] [-o OUT.md] [--shared DIR]

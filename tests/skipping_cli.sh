@@ -18,8 +18,8 @@ num() { sed -n "s/^$1: \([0-9]*\).*/\1/p" "$2"; }
 [ "$(num painting "$tmp/on.txt")" = "$(num painting "$tmp/off.txt")" ] || fail "painting counts differ"
 on=$(num evaluated "$tmp/on.txt"); off=$(num evaluated "$tmp/off.txt")
 [ -n "$on" ] && [ -n "$off" ] && [ "$on" -lt "$off" ] || fail "evaluated: $on with skipping, $off without"
-# the ideal bounds' lines (docs/SKIPPING.md, "How far a max bound can go"): with skipping only,
-# and evaluating no more than the frame's samples
+# the ideal bounds' lines (docs/studies/SKIPPING_LIMITS.md, "How far a max bound can go"): with
+# skipping only, and evaluating no more than the frame's samples
 grep -q '^ideal max bound evaluates: [0-9.]*% with blocks down to 4 cells, [0-9.]*% with blocks down to 2 cells$' \
     "$tmp/on.txt" || fail "--stats: no ideal bound line"
 ! grep -q '^ideal' "$tmp/off.txt" || fail "--no-skip --stats printed an ideal bound"
@@ -39,9 +39,9 @@ awk -v o="$oracle" -v a="$ideal" 'BEGIN { exit !(o > 0 && o <= a) }' || fail "or
 pat="^the column walk evaluates, with the run's own box: [0-9.]*% ([0-9]* windows), one probe per sample: [0-9.]*% ([0-9]* windows), unaligned windows: [0-9.]*% ([0-9]* windows), unaligned windows and one probe per sample: [0-9.]*% ([0-9]* windows)\$"
 grep -q "$pat" "$tmp/on.txt" || fail "--stats: no column walk parts line"
 ! grep -q '^the column walk' "$tmp/off.txt" || fail "--no-skip --stats printed the column walk's parts"
-# lanes walking alone (docs/SKIPPING.md, "How far a max bound can go"): 16 x each group's busiest
-# column of the walk --columns writes, as a share of the frame's samples, and never below the
-# column walk's own share (a group's busiest column evaluates at least its mean)
+# lanes walking alone (docs/studies/SKIPPING_LIMITS.md, "How far a max bound can go"): 16 x each
+# group's busiest column of the walk --columns writes, as a share of the frame's samples, and never
+# below the column walk's own share (a group's busiest column evaluates at least its mean)
 "$retro" render $map $args "$tmp/cols.ppm" --columns "$tmp/cols.csv" || fail "render --columns"
 alone=$(sed -n 's/^lanes walking alone, 16 to a group: \([0-9.]*\)% (each group as many steps as its busiest column)$/\1/p' \
     "$tmp/on.txt")

@@ -1,20 +1,23 @@
 #!/bin/sh
-# docs/SKIPPING.md's tables of counts ("How far a max bound can go": lanes walking alone; "Other
-# bounds at the same granularity"; "Window or schedule"; "Cone steps"; "Modes truth and fixed") against
-# `retro render --stats` of the same frames, rendered here. Counts are exact and the same on any
-# machine, so a change to the walk, the probe or the counting that moves one fails this test
-# until the table is written again from --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
+# The skipping docs' tables of counts (docs/studies/SKIPPING_LIMITS.md: "How far a max bound can
+# go": lanes walking alone; "Other bounds at the same granularity"; "Window or schedule"; "Cone
+# steps"; docs/SKIPPING.md: "Modes truth and fixed") against `retro render --stats` of the same
+# frames, rendered here. Counts are exact and the same on any machine, so a change to the walk,
+# the probe or the counting that moves one fails this test until the table is written again from
+# --stats. Rows of the course's scenes are skipped, with a message, where ../shared/course is
 # absent, and the simd-avx512 columns where this CPU does not run AVX-512.
 set -u
 retro=$1
 . tests/lib/cli_test.sh
 course=${RETRO_SHARED:-../shared}/course
-doc=docs/SKIPPING.md
+docs="docs/SKIPPING.md docs/studies/SKIPPING_LIMITS.md"
+doc="docs/SKIPPING.md or docs/studies/SKIPPING_LIMITS.md" # for messages
 
 . scripts/bench-scenes.sh
 # rows HEADER: the rows of the table under that header line, separator left out
 rows() {
-  awk -v h="$1" '$0 == h { on = 1; getline; next } on && /^\|/ { print; next } on { exit }' "$doc"
+  # shellcheck disable=SC2086
+  awk -v h="$1" '$0 == h { on = 1; getline; next } on && /^\|/ { print; next } on { exit }' $docs
 }
 # stats SCENE SIZE D [MODE]: the path of that frame's --stats output (mode exact by default),
 # rendered once

@@ -1,6 +1,6 @@
 #!/bin/sh
-# The replay study (scripts/study-replay.sh, docs/SKIPPING.md "What the probes cost" and "What the
-# stores cost"): its patch still applies to the kernels it studies, its script answers --help and
+# The replay study (scripts/study-replay.sh; docs/studies/SKIPPING_LIMITS.md, "What the probes cost"
+# and "What the stores cost"): its patch still applies to the kernels it studies, its script answers --help and
 # refuses bad input with exit 2, and every figure those sections quote is in the committed run,
 # results/study-replay.md, whose commit and date they name. The study itself is not run here: it
 # times frames, and tests never do.
@@ -25,13 +25,14 @@ for bad in "-n 0" "-n 100" "-n x" "--frobnicate" "-o"; do
 done
 
 run=results/study-replay.md
+doc=docs/studies/SKIPPING_LIMITS.md
 if [ ! -f "$run" ]; then
   fail "$run is missing"
 else
   # the two sections, from their heading to the next
-  awk '/^## /{on = ($0 == "## What the probes cost" || $0 == "## What the stores cost")} on' docs/SKIPPING.md \
+  awk '/^## /{on = ($0 == "## What the probes cost" || $0 == "## What the stores cost")} on' "$doc" \
     >"$tmp/sections"
-  [ "$(grep -c '^## ' "$tmp/sections")" -eq 2 ] || fail "docs/SKIPPING.md lacks one of the two sections"
+  [ "$(grep -c '^## ' "$tmp/sections")" -eq 2 ] || fail "$doc lacks one of the two sections"
   commit=$(sed -n '1s/^Replay study of \([0-9a-f]*\), .*/\1/p' "$run")
   date=$(sed -n '1s/^Replay study of [0-9a-f]*, \([0-9-]*\) .*/\1/p' "$run")
   [ -n "$commit" ] && [ -n "$date" ] || fail "$run names no commit and date on its first line"
@@ -46,18 +47,18 @@ else
     while read -r x; do
       re="\(^\|[^0-9.]\)$(printf '%s' "$x" | sed 's/\./\\./')\([^0-9]\|$\)"
       grep -q "$re" "$run" || { [ -n "${3:-}" ] && grep -q "$re" "$3"; } ||
-        fail "$2 in docs/SKIPPING.md quote $x, which $run${3:+ and the rest of the file} do not hold"
+        fail "$2 in $doc quote $x, which $run${3:+ and the rest of the file} do not hold"
     done <"$tmp/figures"
   }
   quotes "$tmp/sections" "the sections"
 
   # the summary "Issue 18's targets against the method's measured limits" quotes the same run
   # and the count tables further down (which tests/skipping_doc_counts.sh checks): each figure
-  # must be in the run or elsewhere in docs/SKIPPING.md
+  # must be in the run or elsewhere in that file
   summary="## Issue 18's targets against the method's measured limits"
-  awk -v h="$summary" '/^## /{on = ($0 == h)} on' docs/SKIPPING.md >"$tmp/summary"
-  awk -v h="$summary" '/^## /{on = ($0 == h)} !on' docs/SKIPPING.md >"$tmp/rest"
-  [ -s "$tmp/summary" ] || fail "docs/SKIPPING.md lacks the section '$summary'"
+  awk -v h="$summary" '/^## /{on = ($0 == h)} on' "$doc" >"$tmp/summary"
+  awk -v h="$summary" '/^## /{on = ($0 == h)} !on' "$doc" >"$tmp/rest"
+  [ -s "$tmp/summary" ] || fail "$doc lacks the section '$summary'"
   quotes "$tmp/summary" "the summary's lines" "$tmp/rest"
 fi
 

@@ -287,8 +287,8 @@ static void ideal_case(const study_frame *f)
 }
 
 /* The walk given one part of the ideal walk at a time (hmax_pyramid.h, retro_skip_window and
- * retro_skip_every; docs/SKIPPING.md, "Window or schedule"): still exact, and both parts
- * together evaluate the very samples the ideal max bound at the pyramid's finest blocks does,
+ * retro_skip_every; docs/studies/SKIPPING_LIMITS.md, "Window or schedule"): still exact, and both
+ * parts together evaluate the very samples the ideal max bound at the pyramid's finest blocks does,
  * which --stats and the doc's table take for granted. */
 static void walk_parts_case(const study_frame *f)
 {

@@ -109,9 +109,9 @@ static int print_mesh_stats(const render_job *j)
 }
 
 /* What a vector of 16 adjacent columns would evaluate if each lane walked its own distances,
- * skipping exactly as the ybuffer column walk does (docs/SKIPPING.md, "How far a max bound can
- * go"): every step still moves all lanes, so a group takes as many steps as its busiest column,
- * and counts them for its live lanes as the SIMD counting build does. Groups from column 0.
+ * skipping exactly as the ybuffer column walk does (docs/studies/SKIPPING_LIMITS.md, "How far a max
+ * bound can go"): every step still moves all lanes, so a group takes as many steps as its busiest
+ * column, and counts them for its live lanes as the SIMD counting build does. Groups from column 0.
  * Returns 0 or CLI_EBADINPUT. */
 static int print_lanes_alone(render_job *j, const player_t *p, double all)
 {
@@ -167,11 +167,12 @@ static int print_walk_parts(render_job *j, const retro_kernel *counted, const pl
     return 0;
 }
 
-/* The cone steps' study (docs/SKIPPING.md, "Cone steps"): the share of all (W x (D-1)) the
- * column walk evaluates by cone steps alone, with the pyramid's probe before every sample too,
- * and with the ideal max bound's probe (blocks down to 4 cells) instead, for frames of mode exact
- * with plain samples (cone_map.h). RETRO_CONE_SECTORS and RETRO_CONE_R set the map's shape
- * (checked with the other variables at start-up: src/core/env.c). Returns 0 or CLI_EBADINPUT. */
+/* The cone steps' study (docs/studies/SKIPPING_LIMITS.md, "Cone steps"): the share of all
+ * (W x (D-1)) the column walk evaluates by cone steps alone, with the pyramid's probe before
+ * every sample too, and with the ideal max bound's probe (blocks down to 4 cells) instead, for
+ * frames of mode exact with plain samples (cone_map.h). RETRO_CONE_SECTORS and RETRO_CONE_R set
+ * the map's shape (checked with the other variables at start-up: src/core/env.c). Returns 0 or
+ * CLI_EBADINPUT. */
 static int print_cone_steps(render_job *j, const retro_kernel *counted, const player_t *p, double all)
 {
     const retro_frame *f = retro_ctx_frame(j->rc);

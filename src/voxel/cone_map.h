@@ -1,5 +1,5 @@
-/* A study of cone steps for occlusion skipping (docs/SKIPPING.md, "Cone steps"): how many
- * samples a column walk evaluates when, after each sample, it jumps over the distances that a
+/* A study of cone steps for occlusion skipping (docs/studies/SKIPPING_LIMITS.md, "Cone steps"): how
+ * many samples a column walk evaluates when, after each sample, it jumps over the distances that a
  * per-direction slope bound of the map proves hidden ("cone step mapping", Dummer 2006; the
  * relaxed cones of Policarpo and Oliveira, GPU Gems 3, 2007, bound the same thing for a ray that
  * may enter the surface). Only the counting build of ybuffer uses it (retro render --stats): a
@@ -37,9 +37,9 @@
 /* the shortest step between a column's distances the wedge allows for (cells) */
 #define RETRO_CONE_RMIN 0.69
 
-/* The shape retro render --stats uses unless
- * RETRO_CONE_SECTORS and RETRO_CONE_R say otherwise (the lowest shares of the shapes measured
- * in docs/SKIPPING.md, "Cone steps"); the ranges it takes are env.h's. */
+/* The shape retro render --stats uses unless RETRO_CONE_SECTORS and RETRO_CONE_R say otherwise (the
+ * lowest shares of the shapes measured in docs/studies/SKIPPING_LIMITS.md, "Cone steps"); the
+ * ranges it takes are env.h's. */
 enum { RETRO_CONE_SECTORS_DEFAULT = 64, RETRO_CONE_R_DEFAULT = 8 };
 
 typedef struct retro_cone_map {

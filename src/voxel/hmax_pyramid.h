@@ -79,24 +79,24 @@ void retro_kernel_ybuffer_counted(const void *frame, retro_ctx *rc);
 extern retro_sample_counts retro_simd_counts;
 void retro_kernel_simd_avx512_counted(const void *frame, retro_ctx *rc);
 
-/* The counting ybuffer's ideal bound (docs/SKIPPING.md, "How far a max bound can go"), a study
- * of the method's limit, not a kernel: when it is L >= 0, a run's bound is the largest height of
- * the run's own box of cells instead of its block window (boxes wider than RETRO_IDEAL_BOX
- * cells keep the window, which is no smaller), the probe descends to blocks of 2^L cells, and
- * columns probe before every sample. -1 (the default): the kernel's own traversal. Still exact,
- * so its frames equal naive's. Global like the counts: one thread at a time. */
+/* The counting ybuffer's ideal bound (docs/studies/SKIPPING_LIMITS.md, "How far a max bound can
+ * go"), a study of the method's limit, not a kernel: when it is L >= 0, a run's bound is the
+ * largest height of the run's own box of cells instead of its block window (boxes wider than
+ * RETRO_IDEAL_BOX cells keep the window, which is no smaller), the probe descends to blocks of 2^L
+ * cells, and columns probe before every sample. -1 (the default): the kernel's own traversal. Still
+ * exact, so its frames equal naive's. Global like the counts: one thread at a time. */
 extern int retro_skip_ideal;
 enum { RETRO_IDEAL_BOX = 64 };
-/* Which bound the ideal walk tries after its box's maximum (docs/SKIPPING.md, "Other bounds
- * at the same granularity"): none (RETRO_IDEAL_MAX, the default), a plane above every cell of
- * the box (retro_skip_plane_hides; plain samples only), or the oracle, which skips a run
- * exactly when none of its samples paints (retro_skip_oracle_hides): what any bound at all
- * could do with the same runs. Global like the counts. */
+/* Which bound the ideal walk tries after its box's maximum (docs/studies/SKIPPING_LIMITS.md, "Other
+ * bounds at the same granularity"): none (RETRO_IDEAL_MAX, the default), a plane above every cell
+ * of the box (retro_skip_plane_hides; plain samples only), or the oracle, which skips a run exactly
+ * when none of its samples paints (retro_skip_oracle_hides): what any bound at all could do with
+ * the same runs. Global like the counts. */
 enum { RETRO_IDEAL_MAX, RETRO_IDEAL_PLANE, RETRO_IDEAL_ORACLE };
 extern int retro_skip_ideal_kind;
-/* Which part of the ideal walk the kernel's own walk is given (docs/SKIPPING.md, "Window or
- * schedule"), to tell apart what its windows and its probe schedule each cost: the bound of a
- * run whose box spans at most B = 2^L cells per axis is its level's window
+/* Which part of the ideal walk the kernel's own walk is given (docs/studies/SKIPPING_LIMITS.md,
+ * "Window or schedule"), to tell apart what its windows and its probe schedule each cost: the bound
+ * of a run whose box spans at most B = 2^L cells per axis is its level's window
  * (RETRO_WINDOW_BLOCKS, the kernel's), the largest height of the run's own box
  * (RETRO_WINDOW_OWN_BOX, as the ideal bound takes it), or of the B x B cells from the box's
  * smallest corner where the box spans fewer than B (RETRO_WINDOW_UNALIGNED: what a table of

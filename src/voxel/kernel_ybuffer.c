@@ -266,11 +266,12 @@ static inline __attribute__((always_inline)) void batch_cells(const retro_frame 
 }
 
 #ifdef RETRO_COUNT_SAMPLES
-/* The cone steps' study (cone_map.h, docs/SKIPPING.md "Cone steps"): columns [c0, c1) of mode
- * exact, plain samples, each walked nearest first; after every sample it evaluates, the column
- * jumps over the distances retro_cone_step proves hidden. With retro_skip_cone_pyramid, the
- * pyramid is probed before every sample too (retro_skip_run, one sample at a time), and the
- * walk takes the longer of the two jumps. Exact, so the frame is naive's. */
+/* The cone steps' study (cone_map.h, docs/studies/SKIPPING_LIMITS.md "Cone steps"): columns
+ * [c0, c1) of mode exact, plain samples, each walked nearest first; after every sample it
+ * evaluates, the column jumps over the distances retro_cone_step proves hidden. With
+ * retro_skip_cone_pyramid, the pyramid is probed before every sample too (retro_skip_run, one
+ * sample at a time), and the walk takes the longer of the two jumps. Exact, so the frame is
+ * naive's. */
 static void columns_cone(const retro_frame *f, int c0, int c1, const int kind, const int fog)
 {
     const int W = f->W, H = f->H;
