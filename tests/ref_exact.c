@@ -12,32 +12,56 @@ static int64_t floor_mod(int64_t a, int64_t m)
     return r < 0 ? r + m : r;
 }
 
-void ref_exact_render(const player_t *p, ctx_t *c)
+/* SEMANTICS.md steps 1-2: the view direction by quadrant and the position reduced mod S. */
+typedef struct {
+    float cs, sn, x0, y0;
+} ref_view;
+
+static ref_view view_of(const player_t *p, int S)
 {
-    const int W = c->scr_width, H = c->scr_height, S = c->map_size, D = c->distance;
     int A = (int)floor_mod(p->angle, 360);
     double deg = (double)(A % 90);
     float c0 = (float)cos(deg * 3.14159265358979323846 / 180.0), s0 = (float)sin(deg * 3.14159265358979323846 / 180.0);
-    float cs, sn;
+    ref_view v;
     switch (A / 90) {
-    case 0: cs = c0; sn = s0; break;
-    case 1: cs = -s0; sn = c0; break;
-    case 2: cs = -c0; sn = -s0; break;
-    default: cs = s0; sn = -c0; break;
+    case 0: v.cs = c0; v.sn = s0; break;
+    case 1: v.cs = -s0; v.sn = c0; break;
+    case 2: v.cs = -c0; v.sn = -s0; break;
+    default: v.cs = s0; v.sn = -c0; break;
     }
     double wx = fmod((double)p->x, S), wy = fmod((double)p->y, S);
-    float x0 = (float)(wx < 0 ? wx + S : wx), y0 = (float)(wy < 0 ? wy + S : wy);
+    v.x0 = (float)(wx < 0 ? wx + S : wx);
+    v.y0 = (float)(wy < 0 ? wy + S : wy);
+    return v;
+}
+
+/* Steps 3-5 for column u (1-based) at distance d: the row-major index of the cell read. */
+static size_t cell_of(const ref_view *v, int W, int S, int u, int d)
+{
+    float t = W == 1 ? 0.0f : (float)(2 * (u - 1) - (W - 1)) / (float)(W - 1);
+    float rx = v->cs + t * v->sn, ry = t * v->cs - v->sn;
+    float qx = v->x0 + (float)d * rx, qy = v->y0 + (float)d * ry;
+    int64_t i = floor_mod((int64_t)floorf(qx), S), j = floor_mod((int64_t)floorf(qy), S);
+    return (size_t)(j * S + i);
+}
+
+size_t ref_exact_cell(const player_t *p, int W, int S, int u, int d)
+{
+    const ref_view v = view_of(p, S);
+    return cell_of(&v, W, S, u, d);
+}
+
+void ref_exact_render(const player_t *p, ctx_t *c)
+{
+    const int W = c->scr_width, H = c->scr_height, S = c->map_size, D = c->distance;
+    const ref_view view = view_of(p, S);
     int *first = malloc(sizeof(int) * (size_t)(H + 1)); /* row -> nearest d reaching it */
     uint32_t *col = malloc(sizeof(uint32_t) * (size_t)(H + 1));
     for (int u = 1; u <= W; u++) {
-        float t = W == 1 ? 0.0f : (float)(2 * (u - 1) - (W - 1)) / (float)(W - 1);
-        float rx = cs + t * sn, ry = t * cs - sn;
         for (int r = 1; r <= H; r++)
             first[r] = 0;
         for (int d = D - 1; d >= 1; d--) {
-            float qx = x0 + (float)d * rx, qy = y0 + (float)d * ry;
-            int64_t i = floor_mod((int64_t)floorf(qx), S), j = floor_mod((int64_t)floorf(qy), S);
-            int64_t idx = j * S + i;
+            size_t idx = cell_of(&view, W, S, u, d);
             float k = (0.5f * (float)W) / (float)d;
             float delta = (float)((int64_t)c->height_map[idx] - (int64_t)p->height);
             float vf = k * delta + 0.5f * (float)H;

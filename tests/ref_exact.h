@@ -4,8 +4,12 @@
 #ifndef RETRO_REF_EXACT_H
 #define RETRO_REF_EXACT_H
 
+#include <stddef.h>
+
 #include "render.h"
 
 void ref_exact_render(const player_t *p, ctx_t *c);
+/* The row-major index of the cell mode exact reads for column u (1-based) at distance d. */
+size_t ref_exact_cell(const player_t *p, int W, int S, int u, int d);
 
 #endif

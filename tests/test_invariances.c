@@ -9,6 +9,7 @@
 
 #include "retro_internal.h"
 #include "hard_rig.h"
+#include "ref_exact.h"
 #include "test_util.h"
 
 
@@ -103,36 +104,13 @@ Test(invariance, angle_period)
     rig_done(g, "invariance/angle_period");
 }
 
-/* The cell mode exact reads for column u (1-based) at distance d, by SEMANTICS.md steps 1-5
- * written out here rather than taken from src/. */
-static size_t exact_cell(const player_t *p, int W, int S, int u, int d)
-{
-    int A = p->angle % 360;
-    A += A < 0 ? 360 : 0;
-    double rad = (double)(A % 90) * 3.14159265358979323846 / 180.0;
-    float c0 = (float)cos(rad), s0 = (float)sin(rad), cs, sn;
-    switch (A / 90) {
-    case 0: cs = c0; sn = s0; break;
-    case 1: cs = -s0; sn = c0; break;
-    case 2: cs = -c0; sn = -s0; break;
-    default: cs = s0; sn = -c0; break;
-    }
-    double wx = fmod((double)p->x, S), wy = fmod((double)p->y, S);
-    float x0 = (float)(wx < 0 ? wx + S : wx), y0 = (float)(wy < 0 ? wy + S : wy);
-    float t = W == 1 ? 0.0f : (float)(2 * (u - 1) - (W - 1)) / (float)(W - 1);
-    float rx = cs + t * sn, ry = t * cs - sn;
-    float qx = x0 + (float)d * rx, qy = y0 + (float)d * ry;
-    long i = (long)floorf(qx) % S, j = (long)floorf(qy) % S;
-    i += i < 0 ? S : 0;
-    j += j < 0 ? S : 0;
-    return (size_t)j * (size_t)S + (size_t)i;
-}
-
+/* Marks every cell mode exact reads, by SEMANTICS.md steps 1-5 as the independent reference
+ * (ref_exact.c) writes them, not taken from src/. */
 static void exact_reads(const player_t *p, int W, int D, int S, uint8_t *marks)
 {
     for (int u = 1; u <= W; u++)
         for (int d = 1; d < D; d++)
-            marks[exact_cell(p, W, S, u, d)] = 1;
+            marks[ref_exact_cell(p, W, S, u, d)] = 1;
 }
 
 /* The image depends only on the cells the samples hit: rewriting every other cell (found by
@@ -198,7 +176,7 @@ Test(invariance, unread_cells)
             if (variant == 0) {
                 /* The d = 1 sample of column 1, raised to 255 with a colour of its own, projects
                  * to k_1 * (255 - 170) + H/2 > H: it covers column 1 entirely. */
-                size_t idx = exact_cell(&p, W, S, 1, 1);
+                size_t idx = ref_exact_cell(&p, W, S, 1, 1);
                 cr_assert(marks[idx], "the d = 1 cell of column 1 must be among the cells read");
                 mix.height[idx] = 255;
                 mix.color[idx] = 0x12345600u;
