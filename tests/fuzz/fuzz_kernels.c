@@ -5,8 +5,13 @@
  * branches on. A mismatch, an error return or a pixel left unwritten aborts with the case.
  *
  * Layout (missing bytes read as 0): flags, x[4], y[4], angle[4], height[4], W, H, D[2], S,
- * sky[3], then the cells (height, R, G, B each); cells the input does not cover come from a
- * generator seeded with the input, so short inputs still give varied maps.
+ * sky[3], (with flags & 0x80 on a tiny screen, the far distance[3],) effects, parameter, then
+ * the cells (height, R, G, B each); cells the input does not cover come from a generator
+ * seeded with the input, so short inputs still give varied maps. In modes exact and lod, the
+ * only ones that take effects, the effects byte picks the voxel effects (fog, bilinear, shade,
+ * water, horizon, morph, fog's exponential form) and the parameter byte sets their values, so
+ * occlusion skipping's bound is fuzzed with the per-sample effects it extends to (bilinear's
+ * wider box and margin) and on the maps the baked effects rewrite.
  *
  * The mesh family's kernels run on the same map and pose against mesh-zbuffer, nearer (a mesh
  * frame holds about D^2 squares): D mod 65, mode (flags & 7) mod 3, back faces culled when
@@ -70,7 +75,7 @@ static uint64_t mix64(uint64_t *s)
  * are rewritten in place each input, so every context is told (retro_check_map_changed). */
 static retro_check chk, mesh_chk;
 static int chk_ready;
-static uint8_t heights[MAX_S * MAX_S];
+static uint8_t heights[MAX_S * MAX_S], morph_to[MAX_S * MAX_S];
 static uint32_t colours[MAX_S * MAX_S];
 
 typedef struct {
@@ -78,15 +83,16 @@ typedef struct {
     const ctx_t *c;
     const retro_family *fam;
     int mode;
+    unsigned fx; /* the effects' flags, for the case's description */
 } fuzz_case;
 
 static void describe(const fuzz_case *fc, const char *variant)
 {
     const player_t *p = fc->p;
     const ctx_t *c = fc->c;
-    fprintf(stderr, "case: mode %s, %s, x=%a y=%a angle=%d height=%d, %dx%d, D=%d, S=%d\n",
+    fprintf(stderr, "case: mode %s, %s, x=%a y=%a angle=%d height=%d, %dx%d, D=%d, S=%d, effects 0x%x\n",
             retro_family_mode_name(fc->fam, fc->mode), variant, (double)p->x, (double)p->y, p->angle, p->height,
-            c->scr_width, c->scr_height, c->distance, c->map_size);
+            c->scr_width, c->scr_height, c->distance, c->map_size, fc->fx);
 }
 
 /* Aborts with the case on a variant that failed or differs from naive. */
@@ -144,6 +150,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         D = (int)(take(&r, 3) % (FAR_SAMPLES / (unsigned)W)) + 1;
     else if ((long)W * D > MAX_SAMPLES)
         D = MAX_SAMPLES / W;
+    const unsigned fx_bits = take(&r, 1), fx_param = take(&r, 1);
     uint64_t seed = size;
     for (size_t i = 0; i < size; i++)
         seed = seed * 131 + data[i];
@@ -163,16 +170,36 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             c |= (uint32_t)(i * 29 + 1) & 0x7f;
         heights[i] = (uint8_t)h;
         colours[i] = c;
+        morph_to[i] = (uint8_t)(255 - h + (unsigned)i % 7); /* a second keyframe unlike the first */
     }
     ctx_t c = {W, H, S, D, sky, heights, colours, NULL};
-    fuzz_case fc = {&p, &c, &retro_family_voxel, (int)mode};
+    fuzz_case fc = {&p, &c, &retro_family_voxel, (int)mode, 0};
 
     retro_check_map_changed(&chk);
     /* The input picks one ISA level (levels this CPU lacks run nothing but naive) and one
      * thread count for threaded kernels. */
     chk.select_level = level < chk.level ? level : chk.level;
     chk.select_threads = threads;
-    retro_err e = retro_check_frame(&chk, mode, NULL, &p, &c, abort_on_mismatch, &fc, NULL);
+    retro_effects vfx;
+    retro_effects_defaults(&vfx);
+    if (mode == RETRO_MODE_EXACT || mode == RETRO_MODE_LOD) {
+        static const unsigned pick[] = {RETRO_FX_FOG,   RETRO_FX_BILINEAR, RETRO_FX_SHADE,
+                                        RETRO_FX_WATER, RETRO_FX_HORIZON,  RETRO_FX_MORPH};
+        for (unsigned b = 0; b < sizeof pick / sizeof *pick; b++)
+            vfx.flags |= (fx_bits >> b & 1u) ? pick[b] : 0;
+        /* fog over sixteenths of the distance, or exponential with density up to 1 */
+        const float span = (float)(D > 16 ? D : 16) / 16.0f;
+        vfx.fog_exp = (fx_bits & 0x40) != 0;
+        vfx.fog_start = (float)(fx_param & 15) * span;
+        vfx.fog_end = (float)((fx_param & 15) + (fx_param >> 4) + 1) * span;
+        vfx.fog_density = (float)(fx_param + 1) / 256.0f;
+        vfx.water_level = (int)fx_param;
+        vfx.pitch = 2 * (int)(int8_t)fx_param; /* rows up or down, past the screen too */
+        vfx.morph_height = morph_to;
+        vfx.morph_t = (float)fx_param / 255.0f;
+    }
+    fc.fx = vfx.flags;
+    retro_err e = retro_check_frame(&chk, mode, vfx.flags ? &vfx : NULL, &p, &c, abort_on_mismatch, &fc, NULL);
     if (e) {
         describe(&fc, "naive");
         fprintf(stderr, "naive failed on a valid input or left a pixel unwritten: %s\n", retro_strerror(e));
@@ -184,7 +211,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     retro_effects fx;
     retro_effects_defaults(&fx);
     fx.flags = (flags & 0x40) ? RETRO_FX_CULL : 0;
-    fuzz_case mfc = {&p, &mc, &retro_family_mesh, (int)((flags & 7) % (unsigned)retro_family_mesh.mode_count)};
+    fuzz_case mfc = {&p, &mc, &retro_family_mesh, (int)((flags & 7) % (unsigned)retro_family_mesh.mode_count),
+                     fx.flags};
     retro_check_map_changed(&mesh_chk);
     mesh_chk.select_level = chk.select_level;
     e = retro_check_frame(&mesh_chk, mfc.mode, &fx, &p, &mc, abort_on_mismatch, &mfc, NULL);
