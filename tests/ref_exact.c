@@ -12,12 +12,7 @@ static int64_t floor_mod(int64_t a, int64_t m)
     return r < 0 ? r + m : r;
 }
 
-/* SEMANTICS.md steps 1-2: the view direction by quadrant and the position reduced mod S. */
-typedef struct {
-    float cs, sn, x0, y0;
-} ref_view;
-
-static ref_view view_of(const player_t *p, int S)
+ref_view ref_exact_view(const player_t *p, int S)
 {
     int A = (int)floor_mod(p->angle, 360);
     double deg = (double)(A % 90);
@@ -35,8 +30,7 @@ static ref_view view_of(const player_t *p, int S)
     return v;
 }
 
-/* Steps 3-5 for column u (1-based) at distance d: the row-major index of the cell read. */
-static size_t cell_of(const ref_view *v, int W, int S, int u, int d)
+size_t ref_exact_cell(const ref_view *v, int W, int S, int u, int d)
 {
     float t = W == 1 ? 0.0f : (float)(2 * (u - 1) - (W - 1)) / (float)(W - 1);
     float rx = v->cs + t * v->sn, ry = t * v->cs - v->sn;
@@ -45,23 +39,17 @@ static size_t cell_of(const ref_view *v, int W, int S, int u, int d)
     return (size_t)(j * S + i);
 }
 
-size_t ref_exact_cell(const player_t *p, int W, int S, int u, int d)
-{
-    const ref_view v = view_of(p, S);
-    return cell_of(&v, W, S, u, d);
-}
-
 void ref_exact_render(const player_t *p, ctx_t *c)
 {
     const int W = c->scr_width, H = c->scr_height, S = c->map_size, D = c->distance;
-    const ref_view view = view_of(p, S);
+    const ref_view view = ref_exact_view(p, S);
     int *first = malloc(sizeof(int) * (size_t)(H + 1)); /* row -> nearest d reaching it */
     uint32_t *col = malloc(sizeof(uint32_t) * (size_t)(H + 1));
     for (int u = 1; u <= W; u++) {
         for (int r = 1; r <= H; r++)
             first[r] = 0;
         for (int d = D - 1; d >= 1; d--) {
-            size_t idx = cell_of(&view, W, S, u, d);
+            size_t idx = ref_exact_cell(&view, W, S, u, d);
             float k = (0.5f * (float)W) / (float)d;
             float delta = (float)((int64_t)c->height_map[idx] - (int64_t)p->height);
             float vf = k * delta + 0.5f * (float)H;

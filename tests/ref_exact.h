@@ -9,7 +9,14 @@
 #include "render.h"
 
 void ref_exact_render(const player_t *p, ctx_t *c);
-/* The row-major index of the cell mode exact reads for column u (1-based) at distance d. */
-size_t ref_exact_cell(const player_t *p, int W, int S, int u, int d);
+
+/* SEMANTICS.md steps 1-2: the view direction by quadrant and the position reduced mod S. */
+typedef struct {
+    float cs, sn, x0, y0;
+} ref_view;
+ref_view ref_exact_view(const player_t *p, int S);
+/* Steps 3-5: the row-major index of the cell mode exact reads for column u (1-based) at
+ * distance d. */
+size_t ref_exact_cell(const ref_view *v, int W, int S, int u, int d);
 
 #endif

@@ -1,9 +1,9 @@
 #!/bin/sh
-# The replay study (scripts/study-replay.sh; docs/studies/SKIPPING_LIMITS.md, "What the probes cost"
-# and "What the stores cost"): its patch still applies to the kernels it studies, its script answers --help and
-# refuses bad input with exit 2, and every figure those sections quote is in the committed run,
-# results/study-replay.md, whose commit and date they name. The study itself is not run here: it
-# times frames, and tests never do.
+# The replay study (scripts/study-replay.sh; docs/studies/SKIPPING_LIMITS.md, "What the probes
+# cost" and "What the stores cost"): its patch still applies to the kernels it studies, its
+# script answers --help and refuses bad input with exit 2, and every figure those sections quote
+# is in the committed run, results/study-replay.md, whose commit and date they name. The study
+# itself is not run here: it times frames, and tests never do.
 set -u
 fails=0
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }

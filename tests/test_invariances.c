@@ -108,9 +108,10 @@ Test(invariance, angle_period)
  * (ref_exact.c) writes them, not taken from src/. */
 static void exact_reads(const player_t *p, int W, int D, int S, uint8_t *marks)
 {
+    const ref_view v = ref_exact_view(p, S);
     for (int u = 1; u <= W; u++)
         for (int d = 1; d < D; d++)
-            marks[ref_exact_cell(p, W, S, u, d)] = 1;
+            marks[ref_exact_cell(&v, W, S, u, d)] = 1;
 }
 
 /* The image depends only on the cells the samples hit: rewriting every other cell (found by
@@ -176,7 +177,8 @@ Test(invariance, unread_cells)
             if (variant == 0) {
                 /* The d = 1 sample of column 1, raised to 255 with a colour of its own, projects
                  * to k_1 * (255 - 170) + H/2 > H: it covers column 1 entirely. */
-                size_t idx = ref_exact_cell(&p, W, S, 1, 1);
+                const ref_view v = ref_exact_view(&p, S);
+                size_t idx = ref_exact_cell(&v, W, S, 1, 1);
                 cr_assert(marks[idx], "the d = 1 cell of column 1 must be among the cells read");
                 mix.height[idx] = 255;
                 mix.color[idx] = 0x12345600u;
