@@ -4,11 +4,11 @@
  * A 640x480 frame is 1.2 MB, within one core's L2 on recent server cores (2 MB on the Xeon of
  * the published run). When each frame hands the chunks to whichever thread asks first, a
  * chunk's lines are often in the other core's cache from the frame before, and a store there
- * first fetches its line from that cache (docs/KERNELS.md, "Load balance"). So the chunks are
- * cut into one run of adjacent chunks per thread, the same runs every frame: thread t takes its
- * run front to back, and a thread whose run is empty takes chunks from the back of another
- * run, the furthest from where that run's owner is. Only the chunks taken that way change
- * hands between frames.
+ * first fetches its line from that cache (docs/studies/KERNEL_STUDIES.md, "Load balance of the
+ * omp kernel"). So the chunks are cut into one run of adjacent chunks per thread, the same
+ * runs every frame: thread t takes its run front to back, and a thread whose run is empty
+ * takes chunks from the back of another run, the furthest from where that run's owner is.
+ * Only the chunks taken that way change hands between frames.
  *
  * Mode course's accumulators only add (retro_course_seek): a thread that takes a chunk behind
  * its last one replays the frame's columns from the first up to it. Taken from the back of

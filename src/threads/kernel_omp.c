@@ -14,9 +14,10 @@
  * run taking chunks from the back of another (chunk_runs.h): so a thread mostly stores into
  * the lines it stored into the frame before, which are still in its core's cache. In mode
  * course a thief takes from another run's front instead, so it goes back at most once a frame.
- * The chunk size was chosen by measurement over 60 seeded poses of the default scenes
- * (docs/KERNELS.md, "Load balance"): chunks of 16-32 lost to the cost each chunk of a strip
- * carries (its constants, its first distances). RETRO_OMP_CHUNK overrides it. */
+ * The chunk size was chosen by measuring 60 seeded poses of the default scenes
+ * (docs/studies/KERNEL_STUDIES.md, "Load balance of the omp kernel"): chunks of 16-32 lost to
+ * the cost each chunk of a strip carries (its constants, its first distances). RETRO_OMP_CHUNK
+ * overrides it. */
 #include <omp.h>
 
 #include "chunk_runs.h"

@@ -21,8 +21,8 @@ void retro_course_start(const retro_frame *f, float *qx, float *qy)
  * is loaded and stored once instead of once per column. The threaded kernels replay the other
  * threads' columns here. A block of 16 is 8 independent chains of additions per column (4 for
  * x, 4 for y): with the 4 chains of a block of 8, each addition waited on the one before it in
- * its chain instead of issuing at the adders' rate (docs/KERNELS.md, "Mode course on threads",
- * has the measurement). */
+ * its chain instead of issuing at the adders' rate (docs/studies/KERNEL_STUDIES.md, "Mode course
+ * on threads", has the measurement). */
 typedef float retro_v4f __attribute__((vector_size(16)));
 enum { RETRO_ADVANCE_VECTORS = 4, RETRO_ADVANCE_BLOCK = 4 * RETRO_ADVANCE_VECTORS };
 static inline retro_v4f v4_at(const float *p)

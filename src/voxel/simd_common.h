@@ -129,7 +129,7 @@ enum { RETRO_SIMD_PAINT_BATCH = 4 };
  * bilinear): a step's loads issue before the paint branches of the steps before it, so when
  * those mispredict the loads are already in flight. 3 and 4 measured faster than 1 and 2, 6
  * no faster; with bilinear, whose samples hold seven vectors, more than 1 was slower
- * (docs/KERNELS.md). */
+ * (docs/studies/KERNEL_STUDIES.md, "Loading ahead"). */
 enum { RETRO_SIMD_AHEAD = 4 };
 
 /* Groups a strip of modes exact and lod renders before painting the sky above them row by row
