@@ -138,9 +138,9 @@ static int print_lanes_alone(render_job *j, const player_t *p, double all)
     return 0;
 }
 
-/* The counting ybuffer's own walk given one part of the ideal walk at a time (docs/SKIPPING.md,
- * "Window or schedule"): its share of all (W x (D-1)) evaluated with each. Returns 0 or
- * CLI_EBADINPUT. */
+/* The counting ybuffer's own walk given one part of the ideal walk at a time
+ * (docs/studies/SKIPPING_LIMITS.md, "Window or schedule"): its share of all (W x (D-1))
+ * evaluated with each. Returns 0 or CLI_EBADINPUT. */
 static int print_walk_parts(render_job *j, const retro_kernel *counted, const player_t *p, double all)
 {
     static const struct {
