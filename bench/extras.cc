@@ -15,7 +15,7 @@ extern "C" {
 void painter_render(const player_t *p, ctx_t *c);
 // results/submission/render.c, built alone with the course's -O3, its render() renamed.
 void submission_render(const player_t *p, ctx_t *c);
-// src/kernel_ybuffer.c built again with RETRO_NO_EFFECTS: the same kernel without effect code.
+// src/voxel/kernel_ybuffer.c built again with RETRO_NO_EFFECTS: the same kernel, no effect code.
 void retro_kernel_ybuffer_noeffects(const void *frame, retro_ctx *rc);
 }
 

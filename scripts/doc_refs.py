@@ -7,7 +7,11 @@ points at it, in another doc or in a comment of the code, does not move with it.
   - a relative Markdown link, in README.md or a file under docs/, to a file that does not exist;
   - a reference to a section, a doc's name followed by a quoted title, as in
     (docs/KERNELS.md, "Where the stores go") or [SKIPPING.md](SKIPPING.md), "Mode course",
-    whose doc has no heading, bold run-in title or paragraph that starts with that title.
+    whose doc has no heading, bold run-in title or paragraph that starts with that title;
+  - a path to a file of the tree (src/..., tests/..., docs/X.md and the like) that does not
+    exist while a tracked file of the same name does elsewhere: a file that moved. Two paths
+    are not this tree's: src/render.c is the course project's file that the submission
+    becomes, and include/retro/ is where `make install` puts the headers.
 
 It reads the files git tracks under DIR (default: the current directory): the Markdown files,
 the C, C++, shell and Python sources, patches and Makefiles. A reference names its doc as a path
@@ -28,6 +32,9 @@ LINK = re.compile(r"\]\(([^)\s]+)\)")
 SECTION = re.compile(
     r"((?:docs/)?(?:studies/)?[A-Z][A-Z_]*\.md)\]?(?:\([^)\s]*\))?[,:]?\s*"
     r"(?:[a-z][a-z0-9 -]*,\s*)?\(?\"([^\"]{3,90})\"")
+PATH = re.compile(r"\b(?:src|tests|scripts|bench|tools|include|docs)/[A-Za-z0-9_./-]+"
+                  r"\.(?:c|h|cc|sh|py|md|patch)\b")
+NOT_OURS = re.compile(r"src/render\.c$|include/retro/")  # the course's file; installed headers
 # the line breaks of comments and prose, with a comment's leading * # // or a patch's +
 BREAK = re.compile(r"\n[ \t]*(?:\*|#|//|\+)?[ \t]*")
 
@@ -65,6 +72,9 @@ def broken(top):
     files = tracked(top)
     out = []
     cache = {}
+    by_name = {}
+    for f in files:
+        by_name.setdefault(os.path.basename(f), []).append(f)
     for f in files:
         path = os.path.join(top, f)
         if not os.path.isfile(path):
@@ -78,6 +88,14 @@ def broken(top):
                 if not os.path.exists(os.path.join(top, os.path.dirname(f), target)):
                     line = text.count("\n", 0, m.start()) + 1
                     out.append(f"{f}:{line}: link to {target}, which does not exist")
+        for m in PATH.finditer(text):
+            p = m.group(0)
+            if NOT_OURS.match(p) or os.path.exists(os.path.join(top, p)):
+                continue
+            now = [g for g in by_name.get(os.path.basename(p), []) if g != p]
+            if now:
+                line = text.count("\n", 0, m.start()) + 1
+                out.append(f"{f}:{line}: {p} does not exist; {' or '.join(now)} does")
         for m in SECTION.finditer(BREAK.sub(" ", text)):
             name, title = m.group(1), re.sub(r"\s+", " ", m.group(2))
             if re.search(r"[$;|<>={}\\]", title) or not re.match(r"[A-Z`]", title):

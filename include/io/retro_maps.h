@@ -43,12 +43,12 @@ int retro_mapgen(const char *style, uint64_t seed, int size, retro_map *m, char 
 /* The styles, NULL-terminated, for --help. */
 extern const char *const retro_mapgen_styles[];
 
-/* Fractal terrain (src/mapgen_terrain.c): style is alpine, islands or canyon.
+/* Fractal terrain (tools/mapgen/mapgen_terrain.c): style is alpine, islands or canyon.
  * Returns -1 for another style. The map must already be allocated with m->size set. */
 int retro_terrain_generate(const char *style, uint64_t seed, retro_map *m);
 
 /* A good default view of a map: its centre, looking along +x, 60 above the terrain there
- * and never below the map's mean height + 60 (src/view.c). Fills x, y, angle, height. */
+ * and never below the map's mean height + 60 (src/io/view.c). Fills x, y, angle, height. */
 struct retro_view {
     float x, y;
     int angle, height;

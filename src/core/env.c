@@ -1,4 +1,4 @@
-/* Strict parsing of the environment (src/env.h). The library, which cannot report, falls back
+/* Strict parsing of the environment (src/core/env.h). The library, which cannot report, falls back
  * to the safe default on a bad value (cpu.c, kernel_omp.c); the CLI calls retro_env_check()
  * first and refuses the run with one line, so the fallback is never silent there. */
 #include "errf.h"

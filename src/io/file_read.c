@@ -1,4 +1,4 @@
-/* Untrusted files (src/file_read.h). */
+/* Untrusted files (src/io/file_read.h). */
 #include "errf.h"
 #include "file_read.h"
 

@@ -1,4 +1,4 @@
-/* Image files: binary PGM/PPM by hand, PNG through libspng (reading: src/png_read.c). A file is
+/* Image files: binary PGM/PPM by hand, PNG through libspng (reading: src/io/png_read.c). A file is
  * read only if it is a regular file whose size is what its header declares (docs/INPUT.md).
  * Writes go to a temporary file in the destination's directory and are renamed into place, so
  * a failed write leaves nothing. */
@@ -164,7 +164,7 @@ int retro_rgb_read(const char *path, uint32_t **data, int *w, int *h, char *err,
     return r;
 }
 
-/* Writes hdr and body to a temporary file beside path (src/out_file.c) and renames it over
+/* Writes hdr and body to a temporary file beside path (src/io/out_file.c) and renames it over
  * path, or with staged set leaves its path there for the caller to rename. */
 static int write_atomic(const char *path, const void *hdr, size_t hlen, const void *body,
                         size_t blen, char *staged, size_t slen, char *err, size_t n)

@@ -1,4 +1,4 @@
-/* Shared by the image readers (src/image_io.c, src/png_read.c): the limits of docs/INPUT.md. */
+/* Shared by the image readers (src/io/image_io.c, src/io/png_read.c): docs/INPUT.md's limits. */
 #ifndef RETRO_IMAGE_READ_H
 #define RETRO_IMAGE_READ_H
 

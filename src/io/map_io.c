@@ -77,7 +77,7 @@ out:
     return r;
 }
 
-/* Both files are written to temporaries first and renamed together (src/out_file.c): a
+/* Both files are written to temporaries first and renamed together (src/io/out_file.c): a
  * failure leaves neither, and never a new .pgm beside an old colour map. */
 int retro_map_save(const char *prefix, const retro_map *m, int png, char *err, size_t n)
 {

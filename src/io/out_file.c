@@ -1,4 +1,4 @@
-/* Whole-or-nothing output files (src/out_file.h). */
+/* Whole-or-nothing output files (src/io/out_file.h). */
 #include "errf.h"
 #include "out_file.h"
 

@@ -21,7 +21,7 @@ int retro_out_commit(const char *tmp, const char *path, char *err, size_t errlen
  * The temporaries are gone afterwards. 0, or -1 with err. */
 int retro_out_commit_pair(char *const tmp[2], const char *const path[2], char *err, size_t errlen);
 
-/* retro_image_write() and retro_gray_write() (src/image_io.c) stopped before the rename: the
+/* retro_image_write() and retro_gray_write() (src/io/image_io.c) stopped before the rename: the
  * complete temporary's path is left in tmp for retro_out_commit_pair(). */
 int retro_image_stage(const char *path, const uint32_t *px, int w, int h, char *tmp,
                       size_t tmplen, char *err, size_t errlen);

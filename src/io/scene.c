@@ -1,4 +1,4 @@
-/* Scene files (include/retro_scene.h): INI read by inih, every value checked, the first problem
+/* Scene files (include/io/retro_scene.h): INI read by inih, every value checked, the first problem
  * reported as one line FILE:LINE: [section] key: problem.
  *
  * inih's handler learns neither the line number (Debian builds it without
