@@ -48,5 +48,5 @@ if [ "$rc" -ne 1 ] || [ "$n" -lt 2 ] || grep -qv '"Window or schedule"' "$tmp/ou
   fail=1
 fi
 
-[ "$fail" -eq 0 ] && echo "ok: the docs' links and section references lead somewhere; a missing file, a renamed section and a section that never was are each caught"
+[ "$fail" -eq 0 ] && echo "ok: the docs' links and section references lead somewhere; a missing file, a renamed section, a section that never was and a moved file are each caught"
 exit "$fail"
