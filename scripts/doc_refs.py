@@ -44,6 +44,10 @@ def usage_error(msg):
     sys.exit(2)
 
 
+def line_of(text, pos):
+    return text.count("\n", 0, pos) + 1
+
+
 def tracked(top):
     r = subprocess.run(["git", "-C", top, "ls-files"], capture_output=True, text=True)
     if r.returncode != 0:
@@ -86,16 +90,16 @@ def broken(top):
                 if not target or re.match(r"[a-z]+:", target):
                     continue
                 if not os.path.exists(os.path.join(top, os.path.dirname(f), target)):
-                    line = text.count("\n", 0, m.start()) + 1
-                    out.append(f"{f}:{line}: link to {target}, which does not exist")
+                    at = line_of(text, m.start())
+                    out.append(f"{f}:{at}: link to {target}, which does not exist")
         for m in PATH.finditer(text):
             p = m.group(0)
             if NOT_OURS.match(p) or os.path.exists(os.path.join(top, p)):
                 continue
             now = [g for g in by_name.get(os.path.basename(p), []) if g != p]
             if now:
-                line = text.count("\n", 0, m.start()) + 1
-                out.append(f"{f}:{line}: {p} does not exist; {' or '.join(now)} does")
+                at = line_of(text, m.start())
+                out.append(f"{f}:{at}: {p} does not exist; {' or '.join(now)} does")
         for m in SECTION.finditer(BREAK.sub(" ", text)):
             name, title = m.group(1), re.sub(r"\s+", " ", m.group(2))
             if re.search(r"[$;|<>={}\\]", title) or not re.match(r"[A-Z`]", title):
