@@ -143,9 +143,23 @@ SIMD_NAME(exact_group)(const retro_frame *f, const retro_simd_frame *sf, const S
         /* The loads of distance n + P issue before this step's paint branch, so they and those
          * of the distances between are in flight when it mispredicts. An index at or past
          * n_end samples a valid cell that is never used (SIMD_DIST keeps lod's in dist). */
+#if defined(__clang__)
+        /* clang makes the loop of the #else a memmove of the whole array before it unrolls it,
+         * which keeps every sample in memory; written out, they stay in registers. gcc keeps
+         * them there with the loop, whose code the published runs timed
+         * (docs/studies/KERNEL_STUDIES.md, "Which compiler"; tests/clang_strips.sh). */
+        _Static_assert(RETRO_SIMD_AHEAD <= 4, "the copies below shift at most 4 samples");
+        if (P > 1)
+            s[0] = s[1];
+        if (P > 2)
+            s[1] = s[2];
+        if (P > 3)
+            s[2] = s[3];
+#else
 #pragma GCC unroll 8
         for (int i = 0; i + 1 < P; i++)
             s[i] = s[i + 1];
+#endif
         SIMD_NAME(sample)(f, sf, k, rx, ry, SIMD_DIST(n + P), &s[P - 1], pow2, packed, bilinear);
         sn = n + 1;
         const simd_mask up = v_igt(v, y);
