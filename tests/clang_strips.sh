@@ -12,8 +12,7 @@ if ! command -v "$cc" >/dev/null 2>&1; then
   echo "SKIP: $cc not found (make deps installs it)"
   exit 0
 fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tests/lib/cli_test.sh
 objs="src/arch/x86/kernel_simd_sse2.o src/arch/x86/kernel_simd_avx2.o src/arch/x86/kernel_simd_avx512.o"
 targets=
 for o in $objs; do targets="$targets $tmp/$o"; done
@@ -24,7 +23,6 @@ if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s BUILD="$tmp" CC="$cc" $targ
   head -n 20 "$tmp/log"
   exit 1
 fi
-fail=0
 strips=0
 for o in $objs; do
   # function by function: each exact or lod strip, and the relocations of its calls
@@ -36,13 +34,11 @@ for o in $objs; do
   bad=$(printf '%s\n' "$found" | grep -v '^strips ' | sort -u)
   strips=$((strips + n))
   if [ "$n" -eq 0 ]; then
-    echo "FAIL: $o: no exact strip found (renamed? this test looks for *_strip_lod<0|1>_fog<0|1>_*)"
-    fail=1
+    fail "$o: no exact strip found (renamed? this test looks for *_strip_lod<0|1>_fog<0|1>_*)"
   elif [ -n "$bad" ]; then
-    echo "FAIL: $o: built by $cc, these strips call memmove (their samples live in memory):"
+    fail "$o: built by $cc, these strips call memmove (their samples live in memory):"
     printf '%s\n' "$bad" | sed 's/^/  /'
-    fail=1
   fi
 done
-[ "$fail" -eq 0 ] || exit 1
+[ "$fails" -eq 0 ] || exit 1
 echo "ok: $strips exact and lod strips built by $cc ($($cc --version | head -n 1)), none calls memmove"
