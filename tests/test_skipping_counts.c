@@ -167,7 +167,7 @@ Test(skipping, bilinear_over_bound)
     for (long t = 0; t < 400000; t++) {
         const int M = 1 + (int)(rng_next(&st) % 255);
         for (int c = 0; c < 4; c++)
-            h[c] = (t & 1) ? (uint8_t)M : (uint8_t)(rng_next(&st) % (uint64_t)(M + 1));
+            h[c] = (uint8_t)((t & 1) ? (uint64_t)M : rng_next(&st) % (uint64_t)(M + 1));
         h[rng_next(&st) % 4] = (uint8_t)M;
         float px, py;
         if (t % 3 == 0) {
